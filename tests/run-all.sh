@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Builds pvscope with AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, then runs
+# every test (ctest). This is the README's test command and what .ci/run calls.
+# Tests that need ../shared/data skip with a message when it is absent; set
+# PVSCOPE_REQUIRE_SHARED_DATA=1 to make its absence a failure (CI does).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${PVSCOPE_TEST_BUILD_DIR:-build-test}
+jobs=${PVSCOPE_JOBS:-$(nproc)}
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVSCOPE_SANITIZE=ON -DPVSCOPE_WERROR=ON
+cmake --build "$build" -j "$jobs"
+ctest --test-dir "$build" --output-on-failure -j "$jobs"

@@ -1,0 +1,39 @@
+#include "tests/support/test_data.h"
+
+#include "wld/common/read_file.h"
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace pvs::test {
+
+std::string shared_data_dir()
+{
+    if (const char* env = std::getenv("PVSCOPE_SHARED_DATA"))
+        return env;
+    return PVSCOPE_SHARED_DATA_DIR;
+}
+
+std::optional<std::string> find_shared_data(const std::string& relative)
+{
+    std::filesystem::path path = std::filesystem::path(shared_data_dir()) / relative;
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec))
+        return std::nullopt;
+    return path.lexically_normal().string();
+}
+
+bool shared_data_required()
+{
+    const char* env = std::getenv("PVSCOPE_REQUIRE_SHARED_DATA");
+    return env && std::string(env) == "1";
+}
+
+std::vector<uint8_t> read_bytes(const std::string& path) { return read_whole_file(path); }
+
+std::string param_name(const std::string& relative_path)
+{
+    return std::filesystem::path(relative_path).stem().string();
+}
+
+} // namespace pvs::test

@@ -1,0 +1,123 @@
+#include "visibility/pvs.h"
+
+#include "visibility/bit_row.h"
+#include "visibility/codec/quake_rle.h"
+
+#include <cassert>
+#include <string>
+#include <unordered_map>
+
+namespace pvs {
+
+namespace {
+constexpr size_t kDenseAlwaysBytes = 256 * 1024;
+}
+
+Pvs Pvs::build(uint32_t region_count, const RowSource& source, StoragePolicy policy)
+{
+    Pvs pvs;
+    pvs.region_count_ = region_count;
+    pvs.words_per_row_ = bits::words_for(region_count);
+    pvs.missing_.assign(pvs.words_per_row_, 0);
+    pvs.row_offsets_.assign(region_count, kMissingRow);
+
+    // Compress every row first: the compressed size decides the storage, and identical rows
+    // (Quake clusters, EverQuest zones with shared lists) are stored once.
+    std::vector<uint64_t> row(pvs.words_per_row_);
+    std::vector<uint8_t> encoded;
+    std::unordered_map<std::string, uint32_t> seen;
+    for (uint32_t r = 0; r < region_count; ++r) {
+        std::fill(row.begin(), row.end(), 0);
+        if (!source(r, row)) {
+            bits::set(pvs.missing_, r);
+            ++pvs.missing_count_;
+            continue;
+        }
+        encoded.clear();
+        encode_quake_rle(row, region_count, encoded);
+        auto [it, inserted] = seen.try_emplace(std::string(encoded.begin(), encoded.end()),
+                                               static_cast<uint32_t>(pvs.compressed_.size()));
+        if (inserted)
+            pvs.compressed_.insert(pvs.compressed_.end(), encoded.begin(), encoded.end());
+        pvs.row_offsets_[r] = it->second;
+    }
+
+    const size_t dense_bytes = size_t{region_count} * pvs.words_per_row_ * sizeof(uint64_t);
+    const size_t compressed_bytes = pvs.compressed_.size() + pvs.row_offsets_.size() * sizeof(uint32_t);
+    bool dense = dense_bytes <= kDenseAlwaysBytes || dense_bytes <= 2 * compressed_bytes;
+    if (policy != StoragePolicy::Auto)
+        dense = policy == StoragePolicy::Dense;
+    if (!dense) {
+        pvs.storage_ = Storage::Compressed;
+        pvs.compressed_.shrink_to_fit();
+        return pvs;
+    }
+
+    pvs.storage_ = Storage::Dense;
+    pvs.dense_.resize(size_t{region_count} * pvs.words_per_row_);
+    for (uint32_t r = 0; r < region_count; ++r)
+        pvs.decode_compressed(r, std::span<uint64_t>(pvs.dense_).subspan(size_t{r} * pvs.words_per_row_,
+                                                                        pvs.words_per_row_));
+    pvs.compressed_ = {};
+    pvs.row_offsets_ = {};
+    return pvs;
+}
+
+bool Pvs::row_missing(uint32_t region) const { return bits::test(missing_, region); }
+
+void Pvs::decode_row(uint32_t region, std::span<uint64_t> out) const
+{
+    assert(region < region_count_ && out.size() >= words_per_row_);
+    out = out.first(words_per_row_);
+    if (storage_ == Storage::Dense) {
+        const uint64_t* src = dense_.data() + size_t{region} * words_per_row_;
+        std::copy(src, src + words_per_row_, out.begin());
+        return;
+    }
+    decode_compressed(region, out);
+}
+
+void Pvs::decode_compressed(uint32_t region, std::span<uint64_t> out) const
+{
+    if (bits::test(missing_, region)) {
+        bits::fill(out, region_count_);
+        return;
+    }
+    // Rows were produced by our own encoder, so they are always complete.
+    decode_quake_rle(std::span<const uint8_t>(compressed_).subspan(row_offsets_[region]), region_count_, out);
+}
+
+std::span<const uint64_t> Pvs::dense_row(uint32_t region) const
+{
+    if (storage_ != Storage::Dense)
+        return {};
+    return std::span<const uint64_t>(dense_).subspan(size_t{region} * words_per_row_, words_per_row_);
+}
+
+bool Pvs::visible(uint32_t from, uint32_t to) const
+{
+    std::vector<uint64_t> row(words_per_row_);
+    decode_row(from, row);
+    return bits::test(row, to);
+}
+
+size_t Pvs::memory_bytes() const
+{
+    return sizeof(Pvs) + dense_.capacity() * sizeof(uint64_t) + compressed_.capacity() +
+           row_offsets_.capacity() * sizeof(uint32_t) + missing_.capacity() * sizeof(uint64_t);
+}
+
+PvsRowCursor::PvsRowCursor(const Pvs& pvs) : pvs_(&pvs), row_(pvs.words_per_row()) {}
+
+std::span<const uint64_t> PvsRowCursor::row(uint32_t region)
+{
+    if (pvs_->storage() == Pvs::Storage::Dense)
+        return pvs_->dense_row(region);
+    if (region_ != region) {
+        pvs_->decode_row(region, row_);
+        region_ = region;
+    }
+    return row_;
+}
+
+} // namespace pvs

@@ -1,0 +1,60 @@
+#include "visibility/zone.h"
+
+namespace pvs {
+
+const char* region_flag_name(uint32_t flag)
+{
+    switch (flag) {
+    case kRegionWater: return "water";
+    case kRegionLava: return "lava";
+    case kRegionSlime: return "slime";
+    case kRegionIce: return "ice";
+    case kRegionVWater: return "vwater";
+    case kRegionPvp: return "pvp";
+    case kRegionZoneLine: return "zone_line";
+    case kRegionSky: return "sky";
+    default: return "?";
+    }
+}
+
+Aabb Zone::bounds() const
+{
+    Aabb box;
+    for (const glm::vec3& p : mesh.positions)
+        box.grow(p);
+    for (const Region& r : regions)
+        if (!r.bounds.empty())
+            box.grow(r.bounds);
+    return box;
+}
+
+namespace {
+template <class T>
+size_t heap_bytes(const std::vector<T>& v)
+{
+    return v.capacity() * sizeof(T);
+}
+size_t heap_bytes(const std::string& s) { return s.capacity() > 15 ? s.capacity() + 1 : 0; }
+} // namespace
+
+size_t Zone::memory_bytes() const
+{
+    size_t total = sizeof(Zone);
+    total += heap_bytes(regions) + heap_bytes(tree.nodes) + heap_bytes(tree.leaf_region);
+    total += heap_bytes(mesh.positions) + heap_bytes(mesh.uvs) + heap_bytes(mesh.indices) + heap_bytes(mesh.faces);
+    total += heap_bytes(materials);
+    for (const Material& m : materials)
+        total += heap_bytes(m.name) + heap_bytes(m.rgba);
+    total += heap_bytes(region_face_offsets) + heap_bytes(region_faces);
+    total += heap_bytes(zone_lines);
+    for (const ZoneLine& z : zone_lines)
+        total += heap_bytes(z.target);
+    if (baked_pvs)
+        total += baked_pvs->memory_bytes();
+    if (portals)
+        total += heap_bytes(portals->portals) + heap_bytes(portals->points);
+    total += heap_bytes(source.counts) + heap_bytes(source.notes);
+    return total;
+}
+
+} // namespace pvs

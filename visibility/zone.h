@@ -1,0 +1,159 @@
+// The zone model: the one in-memory form every file format loads into and every later stage
+// (lookup, culling, baking, rendering, inspection) reads.
+//
+// Conventions (see docs/architecture.md):
+//  - z is up, units are the file's own.
+//  - A region is a BSP leaf that can hold the camera (Quake empty/water/slime/lava/sky leaf,
+//    EverQuest 0x22 region, ...). Region ids are 0-based and dense. Solid and outside leaves
+//    are not regions. Each loader owns the mapping from its file's numbering to region ids
+//    and records it in its header comment.
+//  - A face is a convex polygon of the source file, triangulated into a contiguous range of
+//    triangles. A face may be listed by several regions (Quake marksurfaces); a renderer draws
+//    it once per frame if any of those regions is visible.
+//  - Nothing here knows which file a zone came from, except the free-form ZoneSource notes.
+#pragma once
+
+#include "visibility/math/aabb.h"
+#include "visibility/pvs.h"
+
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pvs {
+
+// Region flags. A region may carry several (an EverQuest zone line under water).
+enum RegionFlag : uint32_t {
+    kRegionWater = 1u << 0,
+    kRegionLava = 1u << 1,
+    kRegionSlime = 1u << 2,
+    kRegionIce = 1u << 3,
+    kRegionVWater = 1u << 4, // EverQuest "vwater": water you see but do not swim in
+    kRegionPvp = 1u << 5,
+    kRegionZoneLine = 1u << 6,
+    kRegionSky = 1u << 7,
+};
+inline constexpr uint32_t kRegionFlagCount = 8;
+// Short lower-case name of one flag bit ("water", "zone_line", ...); "?" for an unknown bit.
+const char* region_flag_name(uint32_t flag);
+
+// Where a zone line leads (Quake trigger_changelevel, EverQuest zone-line region).
+struct ZoneLine {
+    std::string target; // map or zone name; empty when the file does not say
+    Aabb bounds;        // the trigger volume, when known
+};
+
+struct Region {
+    Aabb bounds;            // bounds of the region's volume (or of its geometry where the volume is unknown)
+    uint32_t flags = 0;     // RegionFlag bits
+    int32_t zone_line = -1; // index into Zone::zone_lines, or -1
+};
+
+// How a point exactly on a split plane (signed distance == 0) is classified. Formats differ,
+// and each loader sets its own engine's rule:
+//  - Quake engines (Mod_PointInLeaf) send d == 0 to the back child: OnPlaneGoesBack.
+//  - EverQuest readers send s >= 0 to the front child: OnPlaneGoesFront.
+enum class TieRule : uint8_t { OnPlaneGoesBack, OnPlaneGoesFront };
+
+// Leaf markers in BspTree::leaf_region for leaves that are not regions.
+inline constexpr int32_t kLeafSolid = -1;   // inside a wall (Quake leaf 0, solid contents)
+inline constexpr int32_t kLeafOutside = -2; // outside the world (EverQuest region-less leaf)
+
+// A node child c >= 0 is a node index; c < 0 is the leaf ~c (so -1 is leaf 0).
+struct BspNode {
+    glm::vec3 normal; // split plane: dot(normal, p) - dist; positive = front = children[0]
+    float dist;
+    int32_t children[2];
+};
+static_assert(sizeof(BspNode) == 24, "BspNode is hot data for the point walk: keep it 24 bytes");
+
+struct BspTree {
+    std::vector<BspNode> nodes;
+    std::vector<int32_t> leaf_region; // region id, or kLeafSolid / kLeafOutside
+    int32_t root = -1;                // encoded like a child: a node index, or ~leaf for a one-leaf tree
+    TieRule tie_rule = TieRule::OnPlaneGoesBack;
+
+    static constexpr bool is_leaf(int32_t child) { return child < 0; }
+    static constexpr int32_t leaf_index(int32_t child) { return ~child; }
+};
+
+// Material flags.
+enum MaterialFlag : uint32_t {
+    kMaterialSky = 1u << 0,
+    kMaterialLiquid = 1u << 1,    // warping water/slime/lava/teleport surface
+    kMaterialInvisible = 1u << 2, // not drawn (EverQuest transparent / trigger surfaces)
+};
+
+struct Material {
+    std::string name;
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba; // width*height*4 bytes, or empty when the file carries no pixels
+    uint32_t flags = 0;        // MaterialFlag bits
+};
+
+struct Face {
+    uint32_t first_triangle = 0; // into Mesh::indices / 3
+    uint32_t triangle_count = 0;
+    uint32_t material = 0;       // index into Zone::materials
+};
+
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec2> uvs;     // one per position, in texture repeats (1.0 = one texture width)
+    std::vector<uint32_t> indices;  // three per triangle, counter-clockwise seen from the front
+    std::vector<Face> faces;
+
+    size_t triangle_count() const { return indices.size() / 3; }
+};
+
+// A portal between two regions: a convex planar polygon.
+struct Portal {
+    int32_t regions[2] = {-1, -1};
+    uint32_t first_point = 0; // into PortalSet::points
+    uint32_t point_count = 0;
+};
+struct PortalSet {
+    std::vector<Portal> portals;
+    std::vector<glm::vec3> points;
+};
+
+// Free-form notes from the loader, for `pvscope info` and the inspector's zone panel.
+struct ZoneSource {
+    std::string path;
+    std::string format;  // "Quake BSP", "EverQuest S3D/WLD", ...
+    std::string version; // "29", ...
+    // Format-specific counts a user wants to see, in display order ("leaves.empty" = 1407).
+    std::vector<std::pair<std::string, uint64_t>> counts;
+    std::vector<std::string> notes;
+};
+
+struct Zone {
+    ZoneSource source;
+    std::vector<Region> regions;
+    BspTree tree;
+    Mesh mesh;
+    std::vector<Material> materials;
+    // Faces listed by each region, as compressed rows: region r lists
+    // region_faces[region_face_offsets[r] .. region_face_offsets[r+1]).
+    std::vector<uint32_t> region_face_offsets; // regions.size() + 1 entries
+    std::vector<uint32_t> region_faces;
+    std::vector<ZoneLine> zone_lines;
+    std::optional<Pvs> baked_pvs;        // the PVS stored in the file, if any
+    std::optional<PortalSet> portals;    // portals read from a file or built from the tree, if any
+
+    size_t region_count() const { return regions.size(); }
+    std::span<const uint32_t> faces_of_region(uint32_t region) const
+    {
+        return std::span<const uint32_t>(region_faces)
+            .subspan(region_face_offsets[region], region_face_offsets[region + 1] - region_face_offsets[region]);
+    }
+    Aabb bounds() const;
+    // Bytes of heap memory held by the model (vectors' capacity, strings, PVS storage).
+    size_t memory_bytes() const;
+};
+
+} // namespace pvs

@@ -1,0 +1,36 @@
+#include "wld/common/read_file.h"
+
+#include "visibility/file_error.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+namespace pvs {
+
+std::vector<uint8_t> read_whole_file(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    if (!in)
+        throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));
+    const std::streamoff size = in.tellg();
+    if (size < 0)
+        throw FileError(path, 0, "cannot determine the file size");
+    std::vector<uint8_t> bytes(static_cast<size_t>(size));
+    in.seekg(0);
+    if (!in.read(reinterpret_cast<char*>(bytes.data()), size))
+        throw FileError(path, 0, "read failed");
+    return bytes;
+}
+
+void write_whole_file(const std::string& path, const std::vector<uint8_t>& bytes)
+{
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out)
+        throw FileError(path, 0, std::string("cannot create: ") + std::strerror(errno));
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    if (!out)
+        throw FileError(path, 0, "write failed");
+}
+
+} // namespace pvs

@@ -1,0 +1,13 @@
+// Reads a whole file into memory; throws pvs::FileError when it cannot be opened or read.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pvs {
+
+std::vector<uint8_t> read_whole_file(const std::string& path);
+void write_whole_file(const std::string& path, const std::vector<uint8_t>& bytes);
+
+} // namespace pvs

@@ -1,0 +1,51 @@
+#include "wld/zone_file.h"
+
+#include "visibility/file_error.h"
+#include "wld/common/read_file.h"
+#include "wld/quake/bsp29_reader.h"
+#include "wld/quake/prt_file.h"
+
+#include <filesystem>
+
+namespace pvs {
+
+namespace {
+
+// qbsp writes the portal file next to the map, with the same name: pick it up when present.
+// Its leaf k is BSP leaf k+1 = region k, so it must name exactly the map's vis leaves.
+void attach_sibling_prt(Zone& zone, const std::string& bsp_path)
+{
+    std::filesystem::path prt_path(bsp_path);
+    prt_path.replace_extension(".prt");
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(prt_path, ec))
+        return;
+    quake::PrtFile prt = quake::load_prt(prt_path.string());
+    if (prt.leaf_count != zone.region_count())
+        throw FileError(prt_path.string(), 0,
+                        "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + bsp_path + " has " +
+                            std::to_string(zone.region_count()) + " vis leaves (a portal file of another map?)");
+    zone.portals = std::move(prt.portals);
+    zone.source.notes.push_back("portals from " + prt_path.filename().string());
+}
+
+} // namespace
+
+Zone load_zone(const std::string& path)
+{
+    const std::vector<uint8_t> bytes = read_whole_file(path);
+    if (quake::looks_like_bsp29(bytes)) {
+        Zone zone = quake::load_bsp29(bytes, path);
+        attach_sibling_prt(zone, path);
+        return zone;
+    }
+    if (bytes.size() >= 4 && (std::equal(bytes.begin(), bytes.begin() + 4, "BSP2") ||
+                              std::equal(bytes.begin(), bytes.begin() + 4, "2PSB") ||
+                              std::equal(bytes.begin(), bytes.begin() + 4, "IBSP")))
+        throw FileError(path, 0, "this BSP variant (BSP2 / 2PSB / Quake 3 IBSP) is not supported yet");
+    if (bytes.size() >= 4 && bytes[0] == 30 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 0)
+        throw FileError(path, 0, "Half-Life BSP 30 is not supported");
+    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29)");
+}
+
+} // namespace pvs
