@@ -19,11 +19,16 @@ int32_t walk(const BspNode* nodes, int32_t child, const glm::vec3& p)
 }
 } // namespace
 
+PointLocation locate_point_from(const BspTree& tree, int32_t start, const glm::vec3& point)
+{
+    const int32_t leaf = tree.tie_rule == TieRule::OnPlaneGoesFront ? walk<true>(tree.nodes.data(), start, point)
+                                                                    : walk<false>(tree.nodes.data(), start, point);
+    return {leaf, tree.leaf_region[leaf]};
+}
+
 PointLocation locate_point(const BspTree& tree, const glm::vec3& point)
 {
-    const int32_t leaf = tree.tie_rule == TieRule::OnPlaneGoesFront ? walk<true>(tree.nodes.data(), tree.root, point)
-                                                                    : walk<false>(tree.nodes.data(), tree.root, point);
-    return {leaf, tree.leaf_region[leaf]};
+    return locate_point_from(tree, tree.root, point);
 }
 
 PointLocation trace_point(const BspTree& tree, const glm::vec3& point, std::vector<PathStep>& out)

@@ -23,6 +23,8 @@ struct PointLocation {
 };
 
 PointLocation locate_point(const BspTree& tree, const glm::vec3& point);
+// The same walk from an inner node (or ~leaf) instead of the root; see RegionLocator.
+PointLocation locate_point_from(const BspTree& tree, int32_t start, const glm::vec3& point);
 
 // The nodes the walk for `point` passes through, root first, with the child taken at each
 // (0 front, 1 back): what the inspector highlights as the camera's path. Replaces `out`.
