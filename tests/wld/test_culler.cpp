@@ -1,0 +1,187 @@
+// The culler on e1m1 with its baked PVS (made by WVis, elsewhere), and its defined behaviour for
+// cameras that are not in a region. Independent checks: the frustum stage is compared with the
+// clip-space test of points sampled inside regions; the PVS stage with the decoded row.
+#include "tests/support/test_data.h"
+#include "visibility/bit_row.h"
+#include "visibility/culler.h"
+#include "visibility/region_lookup.h"
+#include "wld/zone_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace pvs {
+namespace {
+
+class CullE1m1 : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        if (auto path = test::find_shared_data("quake/e1m1.bsp"))
+            zone_ = new Zone(load_zone(*path));
+    }
+    static void TearDownTestSuite()
+    {
+        delete zone_;
+        zone_ = nullptr;
+    }
+    void SetUp() override
+    {
+        SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+        ASSERT_NE(zone_, nullptr);
+    }
+    // Seeded cameras at random points inside regions, looking anywhere.
+    static std::vector<Camera> cameras(size_t count, uint32_t seed)
+    {
+        std::vector<Camera> out;
+        const Aabb box = zone_->bounds();
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<float> ux(box.min.x, box.max.x), uy(box.min.y, box.max.y),
+            uz(box.min.z, box.max.z), yaw(0.0f, 360.0f), pitch(-60.0f, 60.0f);
+        while (out.size() < count) {
+            Camera c;
+            c.position = {ux(rng), uy(rng), uz(rng)};
+            c.yaw_degrees = yaw(rng);
+            c.pitch_degrees = pitch(rng);
+            if (locate_point(zone_->tree, c.position).in_region())
+                out.push_back(c);
+        }
+        return out;
+    }
+    static Zone* zone_;
+};
+Zone* CullE1m1::zone_ = nullptr;
+
+TEST_F(CullE1m1, PlayerStartUsesLeaf1199sRowThenTheFrustum)
+{
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    Camera camera;
+    camera.position = {480, -352, 88};
+    std::vector<uint32_t> visible;
+    const CullStats s = culler.cull(camera, {CullMode::PvsFrustum, true}, visible);
+    EXPECT_EQ(s.camera, CameraPlace::InRegion);
+    EXPECT_EQ(s.region, 1198);
+    EXPECT_TRUE(s.pvs_used);
+    std::vector<uint64_t> row(zone_->baked_pvs->words_per_row());
+    zone_->baked_pvs->decode_row(1198, row);
+    EXPECT_EQ(s.regions_after_pvs, bits::count(row));
+    EXPECT_LE(s.regions_after_frustum, s.regions_after_pvs);
+    EXPECT_GT(s.regions_after_frustum, 0u);
+    EXPECT_TRUE(std::is_sorted(visible.begin(), visible.end()));
+    for (uint32_t r : visible)
+        EXPECT_TRUE(bits::test(row, r));
+    EXPECT_LE(s.triangles_after_frustum, s.triangles_after_pvs);
+    EXPECT_LT(s.triangles_after_pvs, s.triangles_total);
+}
+
+TEST_F(CullE1m1, ModeNoneDrawsEverythingAndPvsModeIgnoresTheFrustum)
+{
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    Camera camera;
+    camera.position = {480, -352, 88};
+    std::vector<uint32_t> visible;
+    EXPECT_EQ(culler.cull(camera, {CullMode::None, false}, visible).regions_after_frustum, 1206u);
+    const CullStats pvs_only = culler.cull(camera, {CullMode::Pvs, false}, visible);
+    EXPECT_EQ(pvs_only.regions_after_frustum, pvs_only.regions_after_pvs);
+}
+
+TEST_F(CullE1m1, FrustumNeverDropsARegionWithAPointOnScreen)
+{
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    std::mt19937 rng(8);
+    const Aabb box = zone_->bounds();
+    std::uniform_real_distribution<float> ux(box.min.x, box.max.x), uy(box.min.y, box.max.y), uz(box.min.z, box.max.z);
+    std::vector<uint32_t> visible;
+    for (const Camera& camera : cameras(200, 21)) {
+        culler.cull(camera, {CullMode::Frustum, false}, visible);
+        const glm::mat4 vp = camera.view_projection();
+        for (int i = 0; i < 300; ++i) {
+            const glm::vec3 p{ux(rng), uy(rng), uz(rng)};
+            const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+            if (!(c.w > 0 && std::abs(c.x) < c.w && std::abs(c.y) < c.w && std::abs(c.z) < c.w))
+                continue;
+            const PointLocation at = locate_point(zone_->tree, p);
+            if (at.in_region()) {
+                ASSERT_TRUE(std::binary_search(visible.begin(), visible.end(), uint32_t(at.region)))
+                    << "region " << at.region << " has an on-screen point but was culled";
+            }
+        }
+    }
+}
+
+TEST_F(CullE1m1, PvsPlusFrustumDrawsFewerTrianglesThanFrustumOnTheMedianCamera)
+{
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    std::vector<uint64_t> frustum_only, both;
+    std::vector<uint32_t> visible;
+    for (const Camera& camera : cameras(2000, 77)) {
+        frustum_only.push_back(culler.cull(camera, {CullMode::Frustum, true}, visible).triangles_after_frustum);
+        both.push_back(culler.cull(camera, {CullMode::PvsFrustum, true}, visible).triangles_after_frustum);
+        ASSERT_LE(both.back(), frustum_only.back());
+    }
+    std::nth_element(frustum_only.begin(), frustum_only.begin() + 1000, frustum_only.end());
+    std::nth_element(both.begin(), both.begin() + 1000, both.end());
+    EXPECT_LT(both[1000], frustum_only[1000]);
+}
+
+TEST_F(CullE1m1, CameraInSolidOutsideOrNanFallsBackToTheFrustumAndSaysSo)
+{
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    std::vector<uint32_t> visible, frustum_only;
+    Camera camera;
+    camera.position = zone_->bounds().max + glm::vec3(5000.0f); // far outside the world
+    camera.yaw_degrees = 225.0f;
+    camera.pitch_degrees = -20.0f;
+    const CullStats outside = culler.cull(camera, {CullMode::PvsFrustum, false}, visible);
+    EXPECT_NE(outside.camera, CameraPlace::InRegion);
+    EXPECT_FALSE(outside.pvs_used);
+    EXPECT_EQ(outside.regions_after_pvs, 1206u);
+    culler.cull(camera, {CullMode::Frustum, false}, frustum_only);
+    EXPECT_EQ(visible, frustum_only);
+
+    camera.position = {std::nanf(""), 0.0f, 0.0f};
+    const CullStats nan = culler.cull(camera, {CullMode::PvsFrustum, false}, visible);
+    EXPECT_FALSE(nan.pvs_used);
+    EXPECT_EQ(nan.region, -1);
+}
+
+TEST(Culler, DamagedRowWithoutItsOwnBitStillDrawsTheCameraRegion)
+{
+    // Two regions split by the plane x = 0; region 0's row is empty.
+    Zone zone;
+    zone.tree.nodes.push_back({{1.0f, 0.0f, 0.0f}, 0.0f, {~1, ~2}});
+    zone.tree.leaf_region = {kLeafSolid, 0, 1};
+    zone.tree.root = 0;
+    zone.regions.resize(2);
+    zone.regions[0].bounds.grow({0, -10, -10});
+    zone.regions[0].bounds.grow({10, 10, 10});
+    zone.regions[1].bounds.grow({-10, -10, -10});
+    zone.regions[1].bounds.grow({0, 10, 10});
+    zone.region_face_offsets = {0, 0, 0};
+    const Pvs pvs = Pvs::build(2, [](uint32_t r, std::span<uint64_t> row) {
+        if (r == 1)
+            row[0] = 3;
+        return true;
+    });
+    Culler culler(zone, &pvs);
+    Camera camera;
+    camera.position = {5, 0, 0};
+    camera.yaw_degrees = 180.0f;
+    std::vector<uint32_t> visible;
+    const CullStats s = culler.cull(camera, {CullMode::Pvs, false}, visible);
+    EXPECT_EQ(s.region, 0);
+    EXPECT_EQ(visible, std::vector<uint32_t>{0});
+}
+
+TEST(Culler, ModeNamesRoundTrip)
+{
+    for (CullMode m : {CullMode::None, CullMode::Frustum, CullMode::Pvs, CullMode::PvsFrustum})
+        EXPECT_EQ(parse_cull_mode(cull_mode_name(m)), m);
+    EXPECT_FALSE(parse_cull_mode("everything").has_value());
+}
+
+} // namespace
+} // namespace pvs

@@ -1,0 +1,76 @@
+// The runtime culler: camera -> region (grid-started BSP walk) -> that region's PVS row ->
+// frustum test of each PVS-visible region's bounds -> the regions to draw.
+//
+// Policy for a camera that is not in a region (inside a wall, outside the world, NaN): the PVS
+// stage is skipped and every region goes to the frustum test, and CullStats::camera says so.
+// Engines do the same (Quake's leaf 0 and a missing row give the all-visible row): the frame is
+// never empty and never stale. The camera's own region is always drawn, even if its row lacks
+// its own bit (a damaged file; every vis tool sets it). A zone without a PVS, or mode None/Frustum, skips the PVS stage too.
+//
+// There is no cache keyed by camera position: every call walks the tree, because a camera that
+// moved one unit may have crossed a split plane. The only reuse is the decoded row of a region
+// (PvsRowCursor), keyed by the region the walk just found, which is exact.
+//
+// Not thread-safe: one Culler per thread. It borrows the zone and the PVS, which must outlive it.
+#pragma once
+
+#include "visibility/camera.h"
+#include "visibility/pvs.h"
+#include "visibility/region_locator.h"
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace pvs {
+
+enum class CullMode : uint8_t { None, Frustum, Pvs, PvsFrustum };
+const char* cull_mode_name(CullMode mode);
+std::optional<CullMode> parse_cull_mode(const std::string& name); // "none", "frustum", "pvs", "pvs+frustum"
+
+enum class CameraPlace : uint8_t { InRegion, InSolid, Outside };
+
+struct CullStats {
+    CameraPlace camera = CameraPlace::Outside;
+    int32_t region = -1;          // the camera's region, or -1
+    bool pvs_used = false;        // false: no PVS, a mode without it, or the camera not in a region
+    uint32_t regions_total = 0;
+    uint32_t regions_after_pvs = 0;
+    uint32_t regions_after_frustum = 0; // = regions drawn
+    // Distinct faces' triangles (a face listed by several regions counts once); filled only
+    // when CullOptions::count_triangles is set.
+    uint64_t triangles_total = 0;
+    uint64_t triangles_after_pvs = 0;
+    uint64_t triangles_after_frustum = 0;
+    double lookup_us = 0, pvs_us = 0, frustum_us = 0;
+};
+
+struct CullOptions {
+    CullMode mode = CullMode::PvsFrustum;
+    bool count_triangles = false;
+};
+
+class Culler {
+public:
+    Culler(const Zone& zone, const Pvs* pvs);
+
+    // Fills `visible` (region ids, ascending) and returns the stats. `visible` is reused across
+    // frames so a frame allocates nothing once it has grown.
+    CullStats cull(const Camera& camera, const CullOptions& options, std::vector<uint32_t>& visible);
+
+    const Zone& zone() const { return *zone_; }
+
+private:
+    uint64_t count_triangles(const std::vector<uint32_t>& regions);
+
+    const Zone* zone_;
+    const Pvs* pvs_;
+    RegionLocator locator_;
+    std::optional<PvsRowCursor> cursor_;
+    std::vector<uint32_t> candidates_;
+    std::vector<uint32_t> face_stamp_; // per face: the last counting pass that saw it
+    uint32_t stamp_ = 0;
+};
+
+} // namespace pvs
