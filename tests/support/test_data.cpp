@@ -1,9 +1,12 @@
 #include "tests/support/test_data.h"
 
 #include "wld/common/read_file.h"
+#include "wld/zone_file.h"
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <memory>
 
 namespace pvs::test {
 
@@ -30,6 +33,17 @@ bool shared_data_required()
 }
 
 std::vector<uint8_t> read_bytes(const std::string& path) { return read_whole_file(path); }
+
+const Zone* shared_zone(const std::string& relative)
+{
+    static std::map<std::string, std::unique_ptr<Zone>> loaded;
+    auto& slot = loaded[relative];
+    if (!slot) {
+        if (auto path = find_shared_data(relative))
+            slot = std::make_unique<Zone>(load_zone(*path));
+    }
+    return slot.get();
+}
 
 std::string param_name(const std::string& relative_path)
 {

@@ -5,6 +5,8 @@
 // set (CI sets it), in which case the absence is a failure.
 #pragma once
 
+#include "visibility/zone.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -19,6 +21,8 @@ std::string shared_data_dir();
 std::optional<std::string> find_shared_data(const std::string& relative);
 bool shared_data_required();
 std::vector<uint8_t> read_bytes(const std::string& path);
+// A shared-data zone, loaded once per test binary and kept; nullptr when the file is absent.
+const Zone* shared_zone(const std::string& relative);
 // A gtest parameter name from a data file path: "quake/e1m1.bsp" -> "e1m1".
 std::string param_name(const std::string& relative_path);
 

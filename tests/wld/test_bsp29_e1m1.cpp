@@ -24,24 +24,15 @@ uint64_t source_count(const Zone& zone, const std::string& key)
 
 class E1m1 : public ::testing::Test {
 protected:
-    static void SetUpTestSuite()
-    {
-        if (auto path = test::find_shared_data("quake/e1m1.bsp"))
-            zone_ = new Zone(load_zone(*path));
-    }
-    static void TearDownTestSuite()
-    {
-        delete zone_;
-        zone_ = nullptr;
-    }
     void SetUp() override
     {
         SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+        zone_ = test::shared_zone("quake/e1m1.bsp");
         ASSERT_NE(zone_, nullptr);
     }
-    static Zone* zone_;
+    static const Zone* zone_;
 };
-Zone* E1m1::zone_ = nullptr;
+const Zone* E1m1::zone_ = nullptr;
 
 TEST_F(E1m1, HasOneRegionPerVisLeaf)
 {

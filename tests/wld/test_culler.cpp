@@ -18,19 +18,10 @@ namespace {
 
 class CullE1m1 : public ::testing::Test {
 protected:
-    static void SetUpTestSuite()
-    {
-        if (auto path = test::find_shared_data("quake/e1m1.bsp"))
-            zone_ = new Zone(load_zone(*path));
-    }
-    static void TearDownTestSuite()
-    {
-        delete zone_;
-        zone_ = nullptr;
-    }
     void SetUp() override
     {
         SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+        zone_ = test::shared_zone("quake/e1m1.bsp");
         ASSERT_NE(zone_, nullptr);
     }
     // Seeded cameras at random points inside regions, looking anywhere.
@@ -51,9 +42,9 @@ protected:
         }
         return out;
     }
-    static Zone* zone_;
+    static const Zone* zone_;
 };
-Zone* CullE1m1::zone_ = nullptr;
+const Zone* CullE1m1::zone_ = nullptr;
 
 TEST_F(CullE1m1, PlayerStartUsesLeaf1199sRowThenTheFrustum)
 {
