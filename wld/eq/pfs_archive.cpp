@@ -2,6 +2,7 @@
 
 #include "visibility/file_error.h"
 #include "wld/common/byte_reader.h"
+#include "wld/common/quote.h"
 #include "wld/common/read_file.h"
 #include "wld/eq/pfs_crc.h"
 
@@ -48,26 +49,7 @@ std::string hex32(uint32_t value)
     return text;
 }
 
-// A name shown in a message: printable ASCII kept, other bytes as \xNN, at most 64 bytes.
-std::string quoted(std::string_view name)
-{
-    constexpr size_t kMaxShown = 64;
-    std::string out = "'";
-    for (size_t i = 0; i < name.size() && i < kMaxShown; ++i) {
-        const auto c = static_cast<unsigned char>(name[i]);
-        if (c >= 0x20 && c < 0x7F) {
-            out += static_cast<char>(c);
-        } else {
-            static constexpr char kHex[] = "0123456789abcdef";
-            out += "\\x";
-            out += kHex[c >> 4];
-            out += kHex[c & 15];
-        }
-    }
-    if (name.size() > kMaxShown)
-        out += "...";
-    return out + "'";
-}
+std::string quoted(std::string_view name) { return quote_for_message(name, 64); }
 
 std::string member_file(const std::string& archive, std::string_view name)
 {

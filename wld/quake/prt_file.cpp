@@ -1,6 +1,7 @@
 #include "wld/quake/prt_file.h"
 
 #include "visibility/file_error.h"
+#include "wld/common/quote.h"
 #include "wld/common/read_file.h"
 
 #include <algorithm>
@@ -27,26 +28,7 @@ constexpr int64_t kMaxCount = std::numeric_limits<int32_t>::max(); // region ids
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f'; }
 bool ends_token(char c) { return is_space(c) || c == '(' || c == ')'; }
 
-// A token shown in a message: printable ASCII kept, other bytes as \xNN, at most 24 bytes.
-std::string quoted(std::string_view token)
-{
-    constexpr size_t kMaxShown = 24;
-    std::string out = "'";
-    for (size_t i = 0; i < token.size() && i < kMaxShown; ++i) {
-        const auto c = static_cast<unsigned char>(token[i]);
-        if (c >= 0x20 && c < 0x7F) {
-            out += static_cast<char>(c);
-        } else {
-            static constexpr char kHex[] = "0123456789abcdef";
-            out += "\\x";
-            out += kHex[c >> 4];
-            out += kHex[c & 15];
-        }
-    }
-    if (token.size() > kMaxShown)
-        out += "...";
-    return out + "'";
-}
+std::string quoted(std::string_view token) { return quote_for_message(token, 24); }
 
 bool is_binary(std::string_view token)
 {
