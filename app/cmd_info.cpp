@@ -78,11 +78,7 @@ int run_info(const InfoOptions& options)
         const auto start = std::chrono::steady_clock::now();
         const Zone zone = load_zone(options.path);
         const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const ZoneStats stats = compute_zone_stats(zone);
-        if (options.json)
-            std::cout << zone_report_json(zone, stats, load_ms).dump(2) << "\n";
-        else
-            print_text(zone, stats, load_ms);
+        print_zone_report(zone, load_ms, options.json);
         return 0;
     } catch (const FileError& e) {
         std::fprintf(stderr, "pvscope: error: %s\n", e.what());
@@ -91,6 +87,15 @@ int run_info(const InfoOptions& options)
 }
 
 } // namespace
+
+void print_zone_report(const Zone& zone, double load_ms, bool json)
+{
+    const ZoneStats stats = compute_zone_stats(zone);
+    if (json)
+        std::cout << zone_report_json(zone, stats, load_ms).dump(2) << "\n";
+    else
+        print_text(zone, stats, load_ms);
+}
 
 void register_info_command(CLI::App& app, int& exit_code)
 {

@@ -1,5 +1,6 @@
 // pvscope: inspector and command-line tool for visibility culling in classic 3-D worlds.
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together.
+#include "app/cmd_gen.h"
 #include "app/cmd_info.h"
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,7 @@ int main(int argc, char** argv)
     app.require_subcommand(0, 1);
     int exit_code = 0;
     pvs::app::register_info_command(app, exit_code);
+    pvs::app::register_gen_command(app, exit_code);
 
     CLI11_PARSE(app, argc, argv);
     if (app.get_subcommands().empty()) {

@@ -1,0 +1,31 @@
+// A BSP tree for a voxel level: axis-aligned split planes on cell boundaries, chosen where the
+// most neighbouring cells differ (room walls, floors, liquid surfaces), until every leaf is a box
+// of one content. Open boxes become regions (convex, one content, so one set of flags); solid
+// boxes become outside leaves, as EverQuest's region-less leaves are.
+//
+// Front is the high side of each plane; a point exactly on a plane goes front
+// (TieRule::OnPlaneGoesFront, the EverQuest rule), which matches cell index = floor(coordinate).
+#pragma once
+
+#include "visibility/zone.h"
+#include "wld/gen/voxel_level.h"
+
+#include <vector>
+
+namespace pvs::gen {
+
+struct LeafBox {
+    glm::ivec3 lo, hi; // cells lo <= c < hi
+    Cell content;
+};
+
+struct KdBsp {
+    BspTree tree;
+    std::vector<LeafBox> leaves;     // parallel to tree.leaf_region
+    std::vector<uint32_t> region_leaf; // region id -> leaf index
+};
+
+// cell_size: world units per cell; origin: world position of cell (0,0,0)'s low corner.
+KdBsp build_kd_bsp(const VoxelLevel& level, float cell_size, const glm::vec3& origin);
+
+} // namespace pvs::gen
