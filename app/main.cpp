@@ -2,6 +2,7 @@
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together.
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
+#include "app/cmd_render.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -13,6 +14,7 @@ int main(int argc, char** argv)
     app.require_subcommand(0, 1);
     int exit_code = 0;
     pvs::app::register_info_command(app, exit_code);
+    pvs::app::register_render_command(app, exit_code);
     pvs::app::register_gen_command(app, exit_code);
 
     CLI11_PARSE(app, argc, argv);
