@@ -1,0 +1,54 @@
+// Image-space accuracy of a culling result for one camera.
+//
+// Input: the face id seen at every pixel when the WHOLE zone is drawn (an exact ID buffer,
+// -1 for background) and the regions the culler kept. A pixel "pops" when its face would not
+// have been drawn: none of the regions that list the face was kept. Overdraw compares what was
+// drawn with what was needed:
+//   triangle overdraw = triangles drawn (each face once) / triangles of the faces on screen
+//   region overdraw   = regions drawn / regions that list at least one face on screen
+// Both are >= 1 for a conservative PVS that draws everything needed; 1 is the ideal.
+// Pure computation on flat data: the renderer that makes the ID buffer lives in ui/.
+#pragma once
+
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace pvs {
+
+// Face -> the regions listing it, as compressed rows (the inverse of Zone::faces_of_region).
+struct FaceRegions {
+    std::vector<uint32_t> offsets; // faces + 1
+    std::vector<uint32_t> regions;
+
+    std::span<const uint32_t> of(uint32_t face) const
+    {
+        return std::span<const uint32_t>(regions).subspan(offsets[face], offsets[face + 1] - offsets[face]);
+    }
+};
+FaceRegions build_face_regions(const Zone& zone);
+
+struct ImageAccuracy {
+    uint64_t pixels = 0;          // all pixels
+    uint64_t covered_pixels = 0;  // pixels showing some face
+    uint64_t popping_pixels = 0;  // covered pixels whose face was not drawn
+    std::vector<uint32_t> popping_faces;   // distinct, ascending
+    std::vector<uint32_t> popping_regions; // regions listing a popped face (should have been kept), ascending
+    uint32_t needed_faces = 0;
+    uint64_t needed_triangles = 0;
+    uint32_t needed_regions = 0;
+    uint64_t drawn_triangles = 0;
+    uint32_t drawn_regions = 0;
+
+    double triangle_overdraw() const { return needed_triangles ? double(drawn_triangles) / double(needed_triangles) : 0.0; }
+    double region_overdraw() const { return needed_regions ? double(drawn_regions) / double(needed_regions) : 0.0; }
+};
+
+// `face_ids`: one entry per pixel, the face id or -1. `drawn_regions`: the culler's output,
+// ascending. Face ids out of range count as background (they cannot come from this zone).
+ImageAccuracy measure_image_accuracy(const Zone& zone, const FaceRegions& face_regions,
+                                     std::span<const int32_t> face_ids, std::span<const uint32_t> drawn_regions);
+
+} // namespace pvs
