@@ -3,6 +3,7 @@
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
 #include "app/cmd_render.h"
+#include "app/cmd_walk.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -16,6 +17,7 @@ int main(int argc, char** argv)
     pvs::app::register_info_command(app, exit_code);
     pvs::app::register_render_command(app, exit_code);
     pvs::app::register_gen_command(app, exit_code);
+    pvs::app::register_walk_command(app, exit_code);
 
     CLI11_PARSE(app, argc, argv);
     if (app.get_subcommands().empty()) {

@@ -1,0 +1,231 @@
+#include "app/cmd_walk.h"
+
+#include "app/arguments.h"
+#include "ui/accuracy_walk.h"
+#include "visibility/eval/camera_set.h"
+#include "visibility/file_error.h"
+#include "wld/zone_file.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <unistd.h>
+
+namespace pvs::app {
+
+namespace {
+
+struct WalkCommandOptions {
+    std::string path;
+    size_t cameras = 500;
+    uint64_t seed = 1;
+    std::string camera_path; // "regions" or a file of x,y,z,yaw,pitch lines
+    std::string cull = "pvs+frustum";
+    std::string pvs = "baked";
+    std::string size = "320x240";
+    float fov = 70.0f;
+    std::string csv;
+    bool render_time = false;
+};
+
+// A camera path file: one camera per line, "x,y,z,yaw,pitch"; blank lines and lines starting
+// with '#' are skipped.
+std::vector<Camera> read_camera_path(const std::string& file, const Camera& lens)
+{
+    std::ifstream in(file);
+    if (!in)
+        throw FileError(file, 0, "cannot open the camera path");
+    std::vector<Camera> cameras;
+    std::string line;
+    uint64_t offset = 0;
+    for (size_t number = 1; std::getline(in, line); ++number) {
+        const uint64_t line_offset = offset;
+        offset += line.size() + 1;
+        if (line.empty() || line[0] == '#')
+            continue;
+        const auto v = parse_camera_argument(line);
+        if (!v)
+            throw FileError(file, line_offset, "line " + std::to_string(number) + ": expected x,y,z,yaw,pitch");
+        Camera c = lens;
+        c.position = {(*v)[0], (*v)[1], (*v)[2]};
+        c.yaw_degrees = (*v)[3];
+        c.pitch_degrees = (*v)[4];
+        cameras.push_back(c);
+    }
+    return cameras;
+}
+
+double percentile(std::vector<double> values, double p)
+{
+    if (values.empty())
+        return 0.0;
+    const size_t k = std::min(values.size() - 1, size_t(p * double(values.size() - 1) + 0.5));
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+    return values[k];
+}
+
+void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
+{
+    std::ofstream out(file);
+    if (!out)
+        throw FileError(file, 0, "cannot create the CSV file");
+    out << "camera,x,y,z,yaw,pitch,region,camera_place,lookup_us,pvs_us,frustum_us,regions_total,regions_after_pvs,"
+           "regions_drawn,triangles_total,triangles_after_pvs,triangles_drawn,render_ms,covered_pixels,"
+           "raster_popping_pixels,popping_checked,popping_confirmed,popping_regions,needed_triangles,"
+           "triangle_overdraw,region_overdraw\n";
+    const char* places[] = {"region", "solid", "outside"};
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const ui::WalkRow& r = rows[i];
+        std::string popping_regions;
+        for (uint32_t region : r.accuracy.popping_regions) {
+            if (!popping_regions.empty())
+                popping_regions.push_back(';');
+            popping_regions.append(std::to_string(region));
+        }
+        out << i << ',' << r.camera.position.x << ',' << r.camera.position.y << ',' << r.camera.position.z << ','
+            << r.camera.yaw_degrees << ',' << r.camera.pitch_degrees << ',' << r.cull.region << ','
+            << places[int(r.cull.camera)] << ',' << r.cull.lookup_us << ',' << r.cull.pvs_us << ',' << r.cull.frustum_us
+            << ',' << r.cull.regions_total << ',' << r.cull.regions_after_pvs << ',' << r.cull.regions_after_frustum
+            << ',' << r.cull.triangles_total << ',' << r.cull.triangles_after_pvs << ','
+            << r.cull.triangles_after_frustum << ',' << r.render_ms << ',' << r.accuracy.covered_pixels << ','
+            << r.accuracy.popping_pixels << ',' << r.popping_checked << ',' << r.popping_confirmed << ','
+            << popping_regions << ',' << r.accuracy.needed_triangles << ',' << r.accuracy.triangle_overdraw() << ','
+            << r.accuracy.region_overdraw() << '\n';
+    }
+}
+
+void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOptions& o)
+{
+    std::vector<double> cull_us, regions, triangles, tri_over, region_over, render_ms;
+    uint64_t raster_popping = 0, confirmed = 0, popping_cameras = 0, outside = 0;
+    for (const ui::WalkRow& r : rows) {
+        cull_us.push_back(r.cull.lookup_us + r.cull.pvs_us + r.cull.frustum_us);
+        regions.push_back(r.cull.regions_after_frustum);
+        triangles.push_back(double(r.cull.triangles_after_frustum));
+        tri_over.push_back(r.accuracy.triangle_overdraw());
+        region_over.push_back(r.accuracy.region_overdraw());
+        render_ms.push_back(r.render_ms);
+        raster_popping += r.accuracy.popping_pixels;
+        confirmed += r.popping_confirmed;
+        popping_cameras += r.popping_confirmed > 0;
+        outside += r.cull.camera != CameraPlace::InRegion;
+    }
+    std::printf("%zu cameras, cull %s, PVS %s, %s; %llu not in a region\n", rows.size(), o.cull.c_str(), o.pvs.c_str(),
+                o.size.c_str(), static_cast<unsigned long long>(outside));
+    std::printf("  %-22s %12s %12s\n", "", "median", "p99");
+    auto line = [](const char* name, const std::vector<double>& v) {
+        std::printf("  %-22s %12.3f %12.3f\n", name, percentile(v, 0.5), percentile(v, 0.99));
+    };
+    line("cull time (us)", cull_us);
+    line("regions drawn", regions);
+    line("triangles drawn", triangles);
+    line("triangle overdraw", tri_over);
+    line("region overdraw", region_over);
+    if (o.render_time)
+        line("render time (ms)", render_ms);
+    std::printf("  popping: %llu pixels confirmed by exact rays on %llu cameras (%llu raster pixels, the rest "
+                "T-junction cracks)\n",
+                static_cast<unsigned long long>(confirmed), static_cast<unsigned long long>(popping_cameras),
+                static_cast<unsigned long long>(raster_popping));
+    std::vector<size_t> order(rows.size());
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = i;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+        if (rows[a].popping_confirmed != rows[b].popping_confirmed)
+            return rows[a].popping_confirmed > rows[b].popping_confirmed;
+        return rows[a].accuracy.triangle_overdraw() > rows[b].accuracy.triangle_overdraw();
+    });
+    std::printf("  worst cameras (confirmed popping, then triangle overdraw):\n");
+    for (size_t k = 0; k < std::min<size_t>(5, order.size()); ++k) {
+        const ui::WalkRow& r = rows[order[k]];
+        std::printf("    #%zu  --camera %g,%g,%g,%g,%g  region %d  popping %llu  overdraw %.2f\n", order[k],
+                    r.camera.position.x, r.camera.position.y, r.camera.position.z, r.camera.yaw_degrees,
+                    r.camera.pitch_degrees, r.cull.region, static_cast<unsigned long long>(r.popping_confirmed),
+                    r.accuracy.triangle_overdraw());
+    }
+}
+
+int run_walk(const WalkCommandOptions& o)
+{
+    const auto size = parse_size_argument(o.size);
+    const auto mode = parse_cull_mode(o.cull);
+    if (!size || !mode) {
+        std::fprintf(stderr, "pvscope: error: bad --size or --cull (see pvscope walk --help)\n");
+        return 2;
+    }
+    try {
+        const Zone zone = load_zone(o.path);
+        const Pvs* pvs = nullptr;
+        if (o.pvs == "baked") {
+            if (!zone.baked_pvs)
+                std::fprintf(stderr, "pvscope: note: %s has no baked PVS; culling with the frustum only\n",
+                             o.path.c_str());
+            pvs = zone.baked_pvs ? &*zone.baked_pvs : nullptr;
+        }
+        Camera lens;
+        lens.fov_y_degrees = o.fov;
+        lens.aspect = float((*size)[0]) / float((*size)[1]);
+        std::vector<Camera> cameras;
+        if (o.camera_path == "regions")
+            cameras = cameras_visiting_every_region(zone, o.seed, lens);
+        else if (!o.camera_path.empty())
+            cameras = read_camera_path(o.camera_path, lens);
+        else
+            cameras = random_cameras_in_regions(zone, o.cameras, o.seed, lens);
+
+        ui::WalkOptions options;
+        options.mode = *mode;
+        options.width = (*size)[0];
+        options.height = (*size)[1];
+        options.time_culled_render = o.render_time;
+        const bool tty = isatty(STDERR_FILENO) != 0;
+        options.progress = [tty](size_t done, size_t total) {
+            if (tty && (done % 16 == 0 || done == total)) {
+                const int filled = int(40 * done / std::max<size_t>(total, 1));
+                std::fprintf(stderr, "\r[%-40s] %zu/%zu cameras", std::string(size_t(filled), '#').c_str(), done, total);
+                if (done == total)
+                    std::fprintf(stderr, "\n");
+            }
+            return true;
+        };
+        const auto rows = ui::run_accuracy_walk(zone, pvs, cameras, options);
+        if (!o.csv.empty())
+            write_csv(o.csv, rows);
+        print_summary(rows, o);
+        return 0;
+    } catch (const FileError& e) {
+        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
+        return 1;
+    } catch (const std::runtime_error& e) {
+        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
+        return 1;
+    }
+}
+
+} // namespace
+
+void register_walk_command(CLI::App& app, int& exit_code)
+{
+    auto o = std::make_shared<WalkCommandOptions>();
+    CLI::App* cmd = app.add_subcommand("walk", "Cull and render a reproducible set of cameras: speed, popping and "
+                                               "overdraw per camera (CSV) and a summary");
+    cmd->add_option("file", o->path, "Zone file")->required();
+    cmd->add_option("--cameras", o->cameras, "Number of seeded random cameras inside regions")->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Seed of the random cameras")->capture_default_str();
+    cmd->add_option("--path", o->camera_path,
+                    "'regions' for one camera in every region a player can stand in, or a file of "
+                    "x,y,z,yaw,pitch lines (replaces --cameras)");
+    cmd->add_option("--cull", o->cull, "none | frustum | pvs | pvs+frustum")->capture_default_str();
+    cmd->add_option("--pvs", o->pvs, "PVS source: baked (the file's) or none")
+        ->check(CLI::IsMember({"baked", "none"}))
+        ->capture_default_str();
+    cmd->add_option("--size", o->size, "ID-buffer size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--fov", o->fov, "Vertical field of view in degrees")->capture_default_str();
+    cmd->add_option("--csv", o->csv, "Write one row per camera to this CSV file");
+    cmd->add_flag("--render-time", o->render_time, "Also time a textured render of each culled frame");
+    cmd->callback([o, &exit_code] { exit_code = run_walk(*o); });
+}
+
+} // namespace pvs::app
