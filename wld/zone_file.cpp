@@ -2,6 +2,7 @@
 
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
+#include "wld/eq/eq_zone_reader.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
 
@@ -45,7 +46,9 @@ Zone load_zone(const std::string& path)
         throw FileError(path, 0, "this BSP variant (BSP2 / 2PSB / Quake 3 IBSP) is not supported yet");
     if (bytes.size() >= 4 && bytes[0] == 30 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 0)
         throw FileError(path, 0, "Half-Life BSP 30 is not supported");
-    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29)");
+    if (eq::looks_like_pfs(bytes))
+        return eq::load_eq_zone(bytes, path);
+    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29, EverQuest S3D)");
 }
 
 } // namespace pvs
