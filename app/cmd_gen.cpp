@@ -1,10 +1,13 @@
 #include "app/cmd_gen.h"
 
 #include "app/cmd_info.h"
+#include "visibility/file_error.h"
+#include "wld/convert.h"
 #include "wld/gen/generate_zone.h"
 #include "wld/gen/voxel_level.h"
 
 #include <chrono>
+#include <cstdio>
 #include <memory>
 
 namespace pvs::app {
@@ -13,6 +16,7 @@ namespace {
 struct GenOptions {
     gen::GenParams params = gen::demo_zone_params();
     bool json = false;
+    std::string output;
 };
 } // namespace
 
@@ -30,12 +34,28 @@ void register_gen_command(CLI::App& app, int& exit_code)
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     cmd->add_flag("--json", options->json, "Print the report as JSON");
+    cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
     cmd->callback([options, &exit_code] {
         const auto start = std::chrono::steady_clock::now();
         const Zone zone = gen::generate_zone(options->params);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         print_zone_report(zone, ms, options->json);
         exit_code = 0;
+        if (options->output.empty())
+            return;
+        const auto output = zone_output_for(options->output, "");
+        if (!output) {
+            std::fprintf(stderr, "pvscope: error: '%s': the output must end in .s3d or .obj\n", options->output.c_str());
+            exit_code = 2;
+            return;
+        }
+        try {
+            for (const std::string& note : write_zone(zone, options->output, *output))
+                std::fprintf(stderr, "note: %s\n", note.c_str());
+        } catch (const FileError& e) {
+            std::fprintf(stderr, "pvscope: error: %s\n", e.what());
+            exit_code = 1;
+        }
     });
 }
 

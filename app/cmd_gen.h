@@ -1,5 +1,5 @@
-// `pvscope gen --rooms N --seed S [--json]`: make a procedural demo zone and report on it.
-// Writing it as an EverQuest .s3d comes with the WLD zone writer.
+// `pvscope gen --rooms N --seed S [--json] [-o zone.s3d|zone.obj]`: make a procedural demo zone,
+// report on it, and write it if asked.
 #pragma once
 
 #include <CLI/App.hpp>

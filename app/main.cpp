@@ -1,5 +1,6 @@
 // pvscope: inspector and command-line tool for visibility culling in classic 3-D worlds.
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together.
+#include "app/cmd_convert.h"
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
 #include "app/cmd_render.h"
@@ -18,6 +19,7 @@ int main(int argc, char** argv)
     pvs::app::register_render_command(app, exit_code);
     pvs::app::register_gen_command(app, exit_code);
     pvs::app::register_walk_command(app, exit_code);
+    pvs::app::register_convert_command(app, exit_code);
 
     CLI11_PARSE(app, argc, argv);
     if (app.get_subcommands().empty()) {

@@ -1,0 +1,58 @@
+#include "wld/convert.h"
+
+#include "visibility/geometry/split_faces.h"
+#include "wld/common/read_file.h"
+#include "wld/eq/eq_zone_writer.h"
+#include "wld/obj/obj_writer.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace pvs {
+
+std::optional<ZoneOutput> zone_output_for(const std::string& path, const std::string& to)
+{
+    std::string kind = to;
+    if (kind.empty()) {
+        kind = std::filesystem::path(path).extension().string();
+        if (!kind.empty())
+            kind.erase(0, 1);
+    }
+    std::transform(kind.begin(), kind.end(), kind.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (kind == "s3d")
+        return ZoneOutput::S3d;
+    if (kind == "obj")
+        return ZoneOutput::Obj;
+    return std::nullopt;
+}
+
+bool faces_shared_between_regions(const Zone& zone)
+{
+    std::vector<uint8_t> seen(zone.mesh.faces.size(), 0);
+    for (uint32_t f : zone.region_faces)
+        if (seen[f]++)
+            return true;
+    return false;
+}
+
+std::vector<std::string> write_zone(const Zone& zone, const std::string& path, ZoneOutput output)
+{
+    if (output == ZoneOutput::Obj) {
+        save_obj(zone, path);
+        return {};
+    }
+    const std::string name = std::filesystem::path(path).stem().string();
+    if (faces_shared_between_regions(zone)) {
+        const Zone cut = clip_faces_to_region_cells(zone);
+        auto written = eq::write_eq_zone_archive(cut, name, {});
+        write_whole_file(path, written.bytes);
+        written.notes.insert(written.notes.begin(), "faces shared between regions were clipped to each region's cell");
+        return written.notes;
+    }
+    auto written = eq::write_eq_zone_archive(zone, name, {});
+    write_whole_file(path, written.bytes);
+    return written.notes;
+}
+
+} // namespace pvs
