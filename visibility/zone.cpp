@@ -57,4 +57,21 @@ size_t Zone::memory_bytes() const
     return total;
 }
 
+void Zone::shrink_to_fit()
+{
+    regions.shrink_to_fit();
+    tree.nodes.shrink_to_fit();
+    tree.leaf_region.shrink_to_fit();
+    mesh.positions.shrink_to_fit();
+    mesh.uvs.shrink_to_fit();
+    mesh.indices.shrink_to_fit();
+    mesh.faces.shrink_to_fit();
+    materials.shrink_to_fit();
+    for (Material& m : materials)
+        m.rgba.shrink_to_fit();
+    region_face_offsets.shrink_to_fit();
+    region_faces.shrink_to_fit();
+    zone_lines.shrink_to_fit();
+}
+
 } // namespace pvs

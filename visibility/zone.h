@@ -154,6 +154,8 @@ struct Zone {
     Aabb bounds() const;
     // Bytes of heap memory held by the model (vectors' capacity, strings, PVS storage).
     size_t memory_bytes() const;
+    // Releases the spare capacity loaders leave behind while growing their vectors.
+    void shrink_to_fit();
 };
 
 } // namespace pvs

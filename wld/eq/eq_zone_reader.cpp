@@ -510,6 +510,7 @@ Zone load_eq_zone(std::span<const uint8_t> s3d, const std::string& file)
     zone.source.path = file;
     EqZoneLoader(archive, wld, zone).load();
     zone.source.notes.insert(zone.source.notes.begin(), "zone WLD: " + member);
+    zone.shrink_to_fit(); // loaders grow their vectors; keep only what the zone needs
     return zone;
 }
 

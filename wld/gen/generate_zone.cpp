@@ -178,6 +178,7 @@ Zone generate_zone(const GenParams& params)
     }
     if (!zone_line_box.empty())
         zone.zone_lines.push_back({"gen_next_zone", zone_line_box});
+    zone.shrink_to_fit(); // loaders grow their vectors; keep only what the zone needs
     return zone;
 }
 

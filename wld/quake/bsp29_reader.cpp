@@ -513,6 +513,7 @@ Zone load_bsp29(std::span<const uint8_t> bytes, const std::string& file)
     read_marksurfaces(bsp, world, zone);
     read_visibility(bsp, visleafs, zone);
     read_entities(bsp, zone);
+    zone.shrink_to_fit(); // loaders grow their vectors; keep only what the zone needs
     return zone;
 }
 

@@ -1,0 +1,72 @@
+// Loading EverQuest zones: e1m1 converted to .s3d, and generated zones of 50, 500 and 5000 rooms
+// written as .s3d, each loaded from memory. Counters: the archive's size, the loaded model's
+// memory (Zone::memory_bytes) and their ratio. Baseline in the same run: parsing e1m1 as the
+// Quake BSP it was converted from.
+//
+//   build/tests/bench/bench_eq_load --benchmark_min_time=1
+#include "tests/support/test_data.h"
+#include "visibility/geometry/split_faces.h"
+#include "wld/common/read_file.h"
+#include "wld/eq/eq_zone_reader.h"
+#include "wld/eq/eq_zone_writer.h"
+#include "wld/gen/generate_zone.h"
+#include "wld/quake/bsp29_reader.h"
+
+#include <benchmark/benchmark.h>
+
+namespace pvs {
+namespace {
+
+void load_archive(benchmark::State& state, const std::vector<uint8_t>& archive)
+{
+    size_t model_bytes = 0;
+    for (auto _ : state) {
+        const Zone zone = eq::load_eq_zone(archive, "bench.s3d");
+        model_bytes = zone.memory_bytes();
+        benchmark::DoNotOptimize(zone.regions.data());
+    }
+    state.counters["archive_kib"] = double(archive.size()) / 1024.0;
+    state.counters["model_kib"] = double(model_bytes) / 1024.0;
+    state.counters["model_per_archive"] = double(model_bytes) / double(archive.size());
+}
+
+void BM_LoadS3d_E1m1Converted(benchmark::State& state)
+{
+    const Zone* quake = test::shared_zone("quake/e1m1.bsp");
+    if (!quake) {
+        state.SkipWithError("SKIPPED: needs ../shared/data/quake/e1m1.bsp");
+        return;
+    }
+    static const std::vector<uint8_t> archive = eq::write_eq_zone(clip_faces_to_region_cells(*quake), "e1m1");
+    load_archive(state, archive);
+}
+BENCHMARK(BM_LoadS3d_E1m1Converted)->Unit(benchmark::kMillisecond);
+
+void BM_LoadBsp_Baseline_E1m1(benchmark::State& state)
+{
+    const auto path = test::find_shared_data("quake/e1m1.bsp");
+    if (!path) {
+        state.SkipWithError("SKIPPED: needs ../shared/data/quake/e1m1.bsp");
+        return;
+    }
+    const std::vector<uint8_t> bytes = read_whole_file(*path);
+    for (auto _ : state) {
+        const Zone zone = quake::load_bsp29(bytes, *path);
+        benchmark::DoNotOptimize(zone.regions.data());
+    }
+}
+BENCHMARK(BM_LoadBsp_Baseline_E1m1)->Unit(benchmark::kMillisecond);
+
+void BM_LoadS3d_Generated(benchmark::State& state)
+{
+    const int rooms = int(state.range(0));
+    const std::vector<uint8_t> archive = eq::write_eq_zone(gen::generate_zone({rooms, 1, 32.0f}), "gen");
+    load_archive(state, archive);
+    state.counters["rooms"] = rooms;
+}
+BENCHMARK(BM_LoadS3d_Generated)->Arg(50)->Arg(500)->Arg(5000)->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace pvs
+
+BENCHMARK_MAIN();
