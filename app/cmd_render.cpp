@@ -7,12 +7,15 @@
 #include "visibility/file_error.h"
 #include "wld/zone_file.h"
 
+#include <array>
 #include <charconv>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace pvs::app {
 
@@ -21,6 +24,7 @@ namespace {
 struct RenderOptions {
     std::string path;
     std::string camera;
+    std::string cull_camera; // empty: cull from --camera
     float fov = 70.0f;
     std::string size = "800x600";
     std::string mode = "textured";
@@ -35,39 +39,53 @@ int run_render(const RenderOptions& options)
     const auto size = parse_size_argument(options.size);
     const auto mode = ui::parse_render_mode(options.mode);
     const auto cull_mode = parse_cull_mode(options.cull);
-    if (!camera_values || !size || !mode || !cull_mode) {
+    const bool locked = !options.cull_camera.empty();
+    const auto cull_camera_values = locked ? parse_camera_argument(options.cull_camera) : std::nullopt;
+    if (!camera_values || !size || !mode || !cull_mode || (locked && !cull_camera_values)) {
         std::fprintf(stderr, "pvscope: error: bad arguments (see pvscope render --help)\n");
         return 2;
     }
     try {
         const Zone zone = load_zone(options.path);
 
-        Camera camera;
-        camera.position = {(*camera_values)[0], (*camera_values)[1], (*camera_values)[2]};
-        camera.yaw_degrees = (*camera_values)[3];
-        camera.pitch_degrees = (*camera_values)[4];
-        camera.fov_y_degrees = options.fov;
-        camera.aspect = float((*size)[0]) / float((*size)[1]);
+        // Both cameras share the lens (fov, aspect, near, far): only where they stand differs.
+        auto make_camera = [&](const std::array<float, 5>& values) {
+            Camera c;
+            c.position = {values[0], values[1], values[2]};
+            c.yaw_degrees = values[3];
+            c.pitch_degrees = values[4];
+            c.fov_y_degrees = options.fov;
+            c.aspect = float((*size)[0]) / float((*size)[1]);
+            return c;
+        };
+        const Camera camera = make_camera(*camera_values);
+        const std::optional<Camera> cull_camera =
+            locked ? std::optional<Camera>(make_camera(*cull_camera_values)) : std::nullopt;
 
         Culler culler(zone, zone.baked_pvs ? &*zone.baked_pvs : nullptr);
-        std::vector<uint32_t> visible;
-        const CullStats s = culler.cull(camera, {*cull_mode, true}, visible);
-
         ui::SoftwareRenderer renderer((*size)[0], (*size)[1]);
-        const auto start = std::chrono::steady_clock::now();
-        const ui::Image image = renderer.render(zone, camera, visible, *mode);
-        const double render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        const ui::CulledFrame frame =
+            ui::render_culled(renderer, culler, camera, cull_camera, {*cull_mode, true}, *mode);
+        const CullStats& s = frame.cull;
+        const ui::Image& image = frame.image;
         ui::save_png(image, options.output);
 
+        // The stats are the culling camera's: the locked one when --cull-camera is given.
+        const double cull_ms = (s.lookup_us + s.pvs_us + s.frustum_us) / 1000.0;
+        const ui::RenderStats& r = renderer.last_stats();
+        const double render_ms = r.scene_ms + r.draw_ms;
         const char* place = s.camera == CameraPlace::InRegion ? "" : s.camera == CameraPlace::InSolid ? " (in solid)" : " (outside)";
+        if (cull_camera)
+            std::printf("locked cull camera %g,%g,%g,%g,%g | ", double(cull_camera->position.x),
+                        double(cull_camera->position.y), double(cull_camera->position.z),
+                        double(cull_camera->yaw_degrees), double(cull_camera->pitch_degrees));
         std::printf("region %d%s | cull %s%s | regions %u -> pvs %u -> frustum %u | triangles %llu -> pvs %llu -> "
                     "frustum %llu | cull %.3f ms | render %.1f ms (scene %.1f, draw %.1f) | %ux%u %s -> %s\n",
                     s.region, place, cull_mode_name(*cull_mode), s.pvs_used ? "" : " (no pvs stage)", s.regions_total,
                     s.regions_after_pvs, s.regions_after_frustum, static_cast<unsigned long long>(s.triangles_total),
                     static_cast<unsigned long long>(s.triangles_after_pvs),
-                    static_cast<unsigned long long>(s.triangles_after_frustum), (s.lookup_us + s.pvs_us + s.frustum_us) / 1000.0,
-                    render_ms, renderer.last_stats().scene_ms, renderer.last_stats().draw_ms, image.width, image.height,
-                    ui::render_mode_name(*mode), options.output.c_str());
+                    static_cast<unsigned long long>(s.triangles_after_frustum), cull_ms, render_ms, r.scene_ms,
+                    r.draw_ms, image.width, image.height, ui::render_mode_name(*mode), options.output.c_str());
         return 0;
     } catch (const FileError& e) {
         std::fprintf(stderr, "pvscope: error: %s\n", e.what());
@@ -96,6 +114,17 @@ void register_render_command(CLI::App& app, int& exit_code)
                                                          text + "'";
             },
             "X,Y,Z,YAW,PITCH"));
+    cmd->add_option("--cull-camera", options->cull_camera,
+                    "Cull from this camera instead (x,y,z,yaw,pitch, same lens as --camera) while drawing from "
+                    "--camera: the locked culling camera, as Source's r_lockpvs. The printed stats are its own, and "
+                    "its view volume is drawn in yellow (except with --mode ids)")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return parse_camera_argument(text) ? std::string()
+                                                   : "expects x,y,z,yaw,pitch (five numbers, no spaces), got '" +
+                                                         text + "'";
+            },
+            "X,Y,Z,YAW,PITCH"));
     cmd->add_option("--fov", options->fov, "Vertical field of view in degrees")
         ->capture_default_str()
         ->check(CLI::Range(1.0f, 179.0f));
@@ -108,9 +137,15 @@ void register_render_command(CLI::App& app, int& exit_code)
                            : "expects WIDTHxHEIGHT with each 1..8192, e.g. 800x600, got '" + text + "'";
             },
             "WxH"));
-    cmd->add_option("--mode", options->mode, "What the pixels show: the textures, a colour per region, or face id + 1")
+    std::vector<std::string> mode_names;
+    for (ui::RenderMode m : ui::kRenderModes)
+        mode_names.emplace_back(ui::render_mode_name(m));
+    cmd->add_option("--mode", options->mode,
+                    "What the pixels show: textured (the textures), regions (a colour per region), ids (face id + 1), "
+                    "flags (textured, tinted by region flags: water blue, lava orange, slime green, ice pale cyan, "
+                    "vwater teal, pvp red, zone line magenta, sky light blue)")
         ->capture_default_str()
-        ->check(CLI::IsMember({"textured", "regions", "ids"}));
+        ->check(CLI::IsMember(mode_names));
     cmd->add_option("--cull", options->cull, "Which culling stages run before drawing")
         ->capture_default_str()
         ->check(CLI::IsMember({"none", "frustum", "pvs", "pvs+frustum"}));

@@ -1,5 +1,6 @@
 #include "ui/software_renderer.h"
 
+#include "ui/overlay_lines.h"
 #include "ui/zone_scene.h"
 
 // Not <irrlicht.h>: through the scene manager it includes irrXML.h, whose `xmlChar<T>()`
@@ -40,13 +41,14 @@ const char* render_mode_name(RenderMode mode)
     case RenderMode::Textured: return "textured";
     case RenderMode::RegionColors: return "regions";
     case RenderMode::IdBuffer: return "ids";
+    case RenderMode::Flags: return "flags";
     }
     return "?";
 }
 
 std::optional<RenderMode> parse_render_mode(std::string_view name)
 {
-    for (RenderMode m : {RenderMode::Textured, RenderMode::RegionColors, RenderMode::IdBuffer})
+    for (RenderMode m : kRenderModes)
         if (name == render_mode_name(m))
             return m;
     return std::nullopt;
@@ -278,7 +280,7 @@ Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std
     // See the header: Burning's Video returns each channel of a flat colour as written or one
     // less; colours in IdBuffer and RegionColors images are all written with odd channels, so
     // setting the low bit back gives exactly what was written. The background stays 0.
-    const bool exact_colours = mode != RenderMode::Textured;
+    const bool exact_colours = mode == RenderMode::IdBuffer || mode == RenderMode::RegionColors;
     for (uint32_t y = 0; y < s.height; ++y) {
         const uint8_t* row = base + size_t(y) * pitch;
         uint8_t* out = image.rgba.data() + size_t(y) * s.width * 4;
@@ -300,6 +302,19 @@ Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std
     s.stats.faces_drawn = drawn.faces;
     s.stats.triangles_drawn = drawn.triangles;
     return image;
+}
+
+CulledFrame render_culled(SoftwareRenderer& renderer, Culler& culler, const Camera& view,
+                          const std::optional<Camera>& locked_cull_camera, const CullOptions& cull_options,
+                          RenderMode mode)
+{
+    CulledFrame frame;
+    const Camera& cull_camera = locked_cull_camera ? *locked_cull_camera : view;
+    frame.cull = culler.cull(cull_camera, cull_options, frame.visible);
+    frame.image = renderer.render(culler.zone(), view, frame.visible, mode);
+    if (locked_cull_camera && mode != RenderMode::IdBuffer)
+        draw_frustum(frame.image, view, *locked_cull_camera, kLockedFrustumColor);
+    return frame;
 }
 
 } // namespace pvs::ui

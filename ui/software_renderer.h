@@ -10,6 +10,15 @@
 //    lists it; region_color(region) is stable across runs and machines.
 //  - IdBuffer: every pixel holds face id + 1 (0 = background), see encode_id below. Exact: no
 //    lighting, texture, filtering, fog, antialiasing or mipmaps are involved.
+//  - Flags: the Textured picture with every face tinted by the flags of the first visible region
+//    (ascending id) that lists it, in the colour kFlagTints gives that flag (water blue, lava
+//    orange, ...); faces of regions without flags are exactly the Textured pixels. The tint is
+//    blended into the material's texels before the fake light (kFlagTintAlpha, 50 %), by drawing
+//    the face with a tinted copy of its texture (made once per material and tint, when first
+//    needed): the same rasteriser, coverage and texel lookup as the Textured picture, no second
+//    pass. A material without pixels has its flat colour tinted the same way. Which faces are
+//    tinted follows the regions' face lists: a Quake leaf lists the faces that bound it from its
+//    own side, so a liquid is tinted seen from inside it, not its surface seen from the air.
 //
 // The ID encoding and its limit. Burning's Video interpolates vertex colours perspective-correct
 // (c/w interpolated, then multiplied by w) and truncates to 8 bits, so a constant colour c
@@ -28,8 +37,10 @@
 #pragma once
 
 #include "visibility/camera.h"
+#include "visibility/culler.h"
 #include "visibility/zone.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -40,8 +51,10 @@
 
 namespace pvs::ui {
 
-enum class RenderMode : uint8_t { Textured, RegionColors, IdBuffer };
-const char* render_mode_name(RenderMode mode); // "textured", "regions", "ids"
+enum class RenderMode : uint8_t { Textured, RegionColors, IdBuffer, Flags };
+inline constexpr std::array<RenderMode, 4> kRenderModes{RenderMode::Textured, RenderMode::RegionColors,
+                                                        RenderMode::IdBuffer, RenderMode::Flags};
+const char* render_mode_name(RenderMode mode); // "textured", "regions", "ids", "flags"
 std::optional<RenderMode> parse_render_mode(std::string_view name);
 
 struct Image {
@@ -85,6 +98,52 @@ inline uint32_t face_at(const Image& ids, uint32_t x, uint32_t y)
 // background and unchanged by restore_written_color. Distinct for almost all pairs (104^3 codes).
 uint32_t region_color(uint32_t region);
 
+// ---- Region-flag tints (Flags mode) ------------------------------------------------------------
+
+// The one table of flag colours, in priority order: a region with several flags is tinted by the
+// first entry whose flag it has. Zone lines first (the exits are what a zone inspector looks for,
+// and an EverQuest zone line is often also water or lava), then PvP (a rule of the area), then the
+// liquids by harm (lava, slime, water), then vwater, ice, and sky last (Quake sky leaves are the
+// void above the level). Every RegionFlag has an entry.
+struct FlagTint {
+    uint32_t flag; // one RegionFlag bit
+    uint32_t rgb;  // 0xRRGGBB
+};
+inline constexpr std::array<FlagTint, kRegionFlagCount> kFlagTints{{
+    {kRegionZoneLine, 0xFF00FF}, // magenta
+    {kRegionPvp, 0xFF2020},      // red
+    {kRegionLava, 0xFF7A00},     // orange
+    {kRegionSlime, 0x30E030},    // green
+    {kRegionWater, 0x1E5AFF},    // blue
+    {kRegionVWater, 0x00B0A0},   // teal
+    {kRegionIce, 0xC0FFFF},      // pale cyan
+    {kRegionSky, 0x87CEFA},      // light blue
+}};
+// The tint's weight in the blend, out of 256: 128 = half texel, half tint. Strong enough that a
+// tinted face reads at a glance, weak enough that its texture still shows through.
+inline constexpr uint32_t kFlagTintAlpha = 128;
+inline constexpr uint32_t kNoTint = 0xFFFFFFFFu;
+
+// Index into kFlagTints of the tint for a region with these RegionFlag bits, or kNoTint.
+constexpr uint32_t flag_tint_index(uint32_t region_flags)
+{
+    for (uint32_t i = 0; i < kFlagTints.size(); ++i)
+        if (region_flags & kFlagTints[i].flag)
+            return i;
+    return kNoTint;
+}
+// `rgb` (0xRRGGBB) blended with the tint `tint_rgb`: per channel (c * (256 - a) + t * a + 128) / 256
+// with a = kFlagTintAlpha.
+constexpr uint32_t blend_tint(uint32_t rgb, uint32_t tint_rgb)
+{
+    uint32_t out = 0;
+    for (uint32_t shift : {16u, 8u, 0u}) {
+        const uint32_t c = (rgb >> shift) & 0xFF, t = (tint_rgb >> shift) & 0xFF;
+        out |= ((c * (256 - kFlagTintAlpha) + t * kFlagTintAlpha + 128) >> 8) << shift;
+    }
+    return out;
+}
+
 // ---- Renderer ----------------------------------------------------------------------------------
 
 struct RenderStats {
@@ -121,5 +180,23 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
+
+// ---- One culled frame --------------------------------------------------------------------------
+
+// A frame as `pvscope render` makes it: the regions are culled from the culling camera and drawn
+// seen from `view`. Normally the culling camera is `view` itself; with `locked_cull_camera` set
+// (an inspector's "lock culling camera", Source's r_lockpvs) culling
+// stays with that camera while the view moves, so what the culler keeps can be looked at from
+// outside. The stats and the visible set are then the locked camera's (exactly what culling
+// from it alone gives), and its view volume is drawn over the picture in kLockedFrustumColor
+// (ui/overlay_lines.h), except in IdBuffer mode, whose pixels must stay face codes.
+struct CulledFrame {
+    CullStats cull;
+    std::vector<uint32_t> visible; // region ids, ascending
+    Image image;
+};
+CulledFrame render_culled(SoftwareRenderer& renderer, Culler& culler, const Camera& view,
+                          const std::optional<Camera>& locked_cull_camera, const CullOptions& cull_options,
+                          RenderMode mode);
 
 } // namespace pvs::ui

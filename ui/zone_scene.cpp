@@ -43,6 +43,29 @@ SColor scaled(SColor c, float factor)
     return SColor(255, channel(c.getRed()), channel(c.getGreen()), channel(c.getBlue()));
 }
 
+// An A8R8G8B8 texture of the material's pixels, each blended by `blend` (0xRRGGBB -> 0xRRGGBB).
+template <typename Blend>
+irr::video::ITexture* make_texture(irr::video::IVideoDriver& driver, const Material& material, const std::string& name,
+                                   Blend blend)
+{
+    if (material.width == 0 || material.height == 0 ||
+        material.rgba.size() != size_t(material.width) * material.height * 4)
+        return nullptr;
+    std::vector<uint32_t> argb(size_t(material.width) * material.height);
+    for (size_t p = 0; p < argb.size(); ++p) {
+        const uint8_t* px = &material.rgba[4 * p];
+        argb[p] = uint32_t(px[3]) << 24 | blend(uint32_t(px[0]) << 16 | uint32_t(px[1]) << 8 | px[2]);
+    }
+    irr::video::IImage* image = driver.createImageFromData(
+        irr::video::ECF_A8R8G8B8, irr::core::dimension2d<irr::u32>(material.width, material.height), argb.data(), false,
+        true);
+    if (!image)
+        return nullptr;
+    irr::video::ITexture* texture = driver.addTexture(name.c_str(), image);
+    image->drop();
+    return texture;
+}
+
 } // namespace
 
 ZoneScene::ZoneScene(const Zone& zone, irr::video::IVideoDriver& driver) : zone_(&zone), driver_(&driver)
@@ -69,6 +92,9 @@ ZoneScene::~ZoneScene()
     for (irr::video::ITexture* texture : textures_)
         if (texture)
             driver_->removeTexture(texture);
+    for (irr::video::ITexture* texture : tinted_textures_)
+        if (texture)
+            driver_->removeTexture(texture);
 }
 
 bool ZoneScene::built_from(const Zone& zone) const
@@ -83,28 +109,31 @@ bool ZoneScene::built_from(const Zone& zone) const
 void ZoneScene::upload_textures()
 {
     textures_.assign(zone_->materials.size(), nullptr);
-    std::vector<uint32_t> argb;
+    tinted_textures_.assign(zone_->materials.size() * kFlagTints.size(), nullptr);
+    tinted_made_.assign(tinted_textures_.size(), 0);
     for (size_t m = 0; m < zone_->materials.size(); ++m) {
-        const Material& material = zone_->materials[m];
-        if (material.width == 0 || material.height == 0 ||
-            material.rgba.size() != size_t(material.width) * material.height * 4)
-            continue;
-        argb.resize(size_t(material.width) * material.height);
-        for (size_t p = 0; p < argb.size(); ++p) {
-            const uint8_t* px = &material.rgba[4 * p];
-            argb[p] = uint32_t(px[3]) << 24 | uint32_t(px[0]) << 16 | uint32_t(px[1]) << 8 | px[2];
-        }
-        irr::video::IImage* image = driver_->createImageFromData(
-            irr::video::ECF_A8R8G8B8, irr::core::dimension2d<irr::u32>(material.width, material.height), argb.data(),
-            false, true);
-        if (!image)
-            continue;
         // Unique within the driver: several scenes (zones) may share one driver over time.
         const std::string name = "pvscope/" + std::to_string(reinterpret_cast<uintptr_t>(this)) + "/" +
-                                 std::to_string(m) + "/" + material.name;
-        textures_[m] = driver_->addTexture(name.c_str(), image);
-        image->drop();
+                                 std::to_string(m) + "/" + zone_->materials[m].name;
+        textures_[m] = make_texture(*driver_, zone_->materials[m], name, [](uint32_t rgb) { return rgb; });
     }
+}
+
+irr::video::ITexture* ZoneScene::tinted_texture(uint32_t material, uint32_t tint)
+{
+    if (material >= zone_->materials.size() || tint >= kFlagTints.size())
+        return nullptr;
+    const size_t slot = size_t(material) * kFlagTints.size() + tint;
+    if (!tinted_made_[slot]) {
+        tinted_made_[slot] = 1;
+        const std::string name = "pvscope/" + std::to_string(reinterpret_cast<uintptr_t>(this)) + "/" +
+                                 std::to_string(material) + "/tint" + std::to_string(tint) + "/" +
+                                 zone_->materials[material].name;
+        const uint32_t tint_rgb = kFlagTints[tint].rgb;
+        tinted_textures_[slot] = make_texture(*driver_, zone_->materials[material], name,
+                                              [tint_rgb](uint32_t rgb) { return blend_tint(rgb, tint_rgb); });
+    }
+    return tinted_textures_[slot];
 }
 
 void ZoneScene::build_faces()
@@ -176,9 +205,10 @@ void ZoneScene::build_faces()
         slot.vertex_count = uint32_t(used.size());
         slot.first_index = uint32_t(batch.indices.size());
         slot.index_count = 3 * face.triangle_count;
-        const float light = fake_light(normal);
-        slot.textured_color = batch.texture ? scaled(SColor(255, 255, 255, 255), light)
-                                            : scaled(flat_material_color(material ? material->name : ""), light);
+        slot.light = fake_light(normal);
+        slot.base_color =
+            batch.texture ? SColor(255, 255, 255, 255) : flat_material_color(material ? material->name : "");
+        slot.textured_color = scaled(slot.base_color, slot.light);
         const irr::core::vector3df irr_normal = to_irrlicht(normal);
         for (uint32_t v : used) {
             const glm::vec2 uv = mesh.uvs.size() == mesh.positions.size() ? mesh.uvs[v] - uv_min : glm::vec2(0.0f);
@@ -217,6 +247,7 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
         if (region >= region_count)
             continue;
         const SColor region_colour(0xFF000000u | region_color(region));
+        const uint32_t tint = mode == RenderMode::Flags ? flag_tint_index(zone_->regions[region].flags) : kNoTint;
         for (uint32_t f : zone_->faces_of_region(region)) {
             if (f >= faces_.size() || face_stamp_[f] == stamp)
                 continue;
@@ -226,16 +257,27 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
                 continue;
             Batch& batch = batches_[slot.batch];
             SColor colour = slot.textured_color;
+            size_t list = 0;
             if (mode == RenderMode::RegionColors)
                 colour = region_colour;
             else if (mode == RenderMode::IdBuffer)
                 colour = SColor(0xFF000000u | encode_id(f + 1));
+            else if (tint != kNoTint) {
+                list = 1 + tint;
+                if (!batch.texture) { // no pixels to tint: tint the flat colour before the light
+                    const uint32_t tinted = blend_tint(slot.base_color.color & 0xFFFFFFu, kFlagTints[tint].rgb);
+                    colour = scaled(SColor(0xFF000000u | tinted), slot.light);
+                }
+            }
             for (uint32_t v = 0; v < slot.vertex_count; ++v)
                 batch.vertices[slot.first_vertex + v].Color = colour;
-            if (batch.frame_indices.empty())
+            if (!batch.in_frame) {
+                batch.in_frame = true;
                 touched_.push_back(slot.batch);
-            batch.frame_indices.insert(batch.frame_indices.end(), batch.indices.begin() + slot.first_index,
-                                       batch.indices.begin() + slot.first_index + slot.index_count);
+            }
+            std::vector<uint16_t>& frame = batch.frame_indices[list];
+            frame.insert(frame.end(), batch.indices.begin() + slot.first_index,
+                         batch.indices.begin() + slot.first_index + slot.index_count);
             ++stats.faces;
             stats.triangles += slot.index_count / 3;
         }
@@ -253,19 +295,31 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
     material.ZBuffer = irr::video::ECFN_LESSEQUAL;
     material.ZWriteEnable = true;
     material.GouraudShading = true;
+    const bool textured_mode = mode == RenderMode::Textured || mode == RenderMode::Flags;
     for (uint32_t b : touched_) {
         Batch& batch = batches_[b];
-        const bool textured = mode == RenderMode::Textured && batch.texture;
-        material.setTexture(0, textured ? batch.texture : nullptr);
-        material.UseMipMaps = textured;
-        material.TextureLayer[0].BilinearFilter = false; // nearest texel, like Quake's own renderer
-        material.TextureLayer[0].TrilinearFilter = false;
-        material.TextureLayer[0].AnisotropicFilter = 0;
-        driver_->setMaterial(material);
-        driver_->drawVertexPrimitiveList(batch.vertices.data(), uint32_t(batch.vertices.size()),
-                                         batch.frame_indices.data(), uint32_t(batch.frame_indices.size() / 3),
-                                         irr::video::EVT_STANDARD, irr::scene::EPT_TRIANGLES, irr::video::EIT_16BIT);
-        batch.frame_indices.clear();
+        for (size_t list = 0; list < kTintSlots; ++list) {
+            std::vector<uint16_t>& frame = batch.frame_indices[list];
+            if (frame.empty())
+                continue;
+            irr::video::ITexture* texture = nullptr;
+            if (textured_mode && batch.texture) {
+                texture = list == 0 ? batch.texture : tinted_texture(batch.material, uint32_t(list - 1));
+                if (!texture) // the tinted copy could not be made: the plain texture, untinted
+                    texture = batch.texture;
+            }
+            material.setTexture(0, texture);
+            material.UseMipMaps = texture != nullptr;
+            material.TextureLayer[0].BilinearFilter = false; // nearest texel, like Quake's own renderer
+            material.TextureLayer[0].TrilinearFilter = false;
+            material.TextureLayer[0].AnisotropicFilter = 0;
+            driver_->setMaterial(material);
+            driver_->drawVertexPrimitiveList(batch.vertices.data(), uint32_t(batch.vertices.size()), frame.data(),
+                                             uint32_t(frame.size() / 3), irr::video::EVT_STANDARD,
+                                             irr::scene::EPT_TRIANGLES, irr::video::EIT_16BIT);
+            frame.clear();
+        }
+        batch.in_frame = false;
     }
     return stats;
 }

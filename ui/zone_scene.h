@@ -22,7 +22,15 @@
 // drawn once however many visible regions list it), writes the face's colour for the mode into
 // its own vertices and appends its indices to its batch's frame list; then each touched batch
 // is one draw call. The first visible region (in list order) that lists a face owns it for
-// RegionColors. Nothing is allocated per frame once the frame lists have grown.
+// RegionColors and Flags. Nothing is allocated per frame once the frame lists have grown.
+//
+// Flags mode: each batch keeps one frame list per tint (kFlagTints) besides the untinted one,
+// and a tinted list is drawn with a tinted copy of the material's texture (texels blended with
+// the tint, blend_tint), made the first time that material is drawn with that tint and kept
+// with the scene; a material without pixels gets its flat colour blended in its vertex colour
+// instead. The vertices, vertex colours (fake light) and rasteriser are the Textured ones, so an
+// untinted face is exactly its Textured pixels. Within a batch the untinted faces are drawn
+// first, then each tint in table order (only coplanar overlapping faces could tell).
 //
 // Not thread-safe. Borrows the zone (which must outlive the scene and stay unchanged) and the
 // driver; the textures it adds to the driver are removed when the scene is destroyed.
@@ -35,6 +43,7 @@
 #include <SColor.h>
 #include <vector3d.h>
 
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -78,19 +87,27 @@ private:
         uint32_t batch = kNoBatch;
         uint32_t first_vertex = 0, vertex_count = 0; // in the batch's vertices
         uint32_t first_index = 0, index_count = 0;   // in the batch's indices
-        irr::video::SColor textured_color;           // fake light (x flat colour without texture)
+        irr::video::SColor base_color;               // unlit: white with a texture, else the flat colour
+        float light = 1.0f;                          // fake light factor
+        irr::video::SColor textured_color;           // base_color x light
     };
+    // Frame lists per batch: [0] untinted, [1 + i] tinted with kFlagTints[i].
+    static constexpr size_t kTintSlots = kFlagTints.size() + 1;
     struct Batch {
         uint32_t material = 0;
         irr::video::ITexture* texture = nullptr; // null: the material has no pixels
         std::vector<irr::video::S3DVertex> vertices;
         std::vector<uint16_t> indices;       // every face's triangles, already in Irrlicht winding
-        std::vector<uint16_t> frame_indices; // this frame's visible faces
+        std::array<std::vector<uint16_t>, kTintSlots> frame_indices; // this frame's visible faces
+        bool in_frame = false;                                        // listed in touched_
     };
 
     void build_faces();
     void upload_textures();
     uint32_t next_stamp();
+    // The material's texture blended with kFlagTints[tint], made on first use; null when the
+    // material has no pixels or the driver cannot make it.
+    irr::video::ITexture* tinted_texture(uint32_t material, uint32_t tint);
 
     const Zone* zone_;
     irr::video::IVideoDriver* driver_;
@@ -99,6 +116,9 @@ private:
     size_t fingerprint_sizes_[6];
 
     std::vector<irr::video::ITexture*> textures_; // per material, or null
+    // Per material x tint: the tinted copy, once made; tinted_made_ says it was tried.
+    std::vector<irr::video::ITexture*> tinted_textures_;
+    std::vector<uint8_t> tinted_made_;
     std::vector<FaceSlot> faces_;
     std::vector<Batch> batches_;
     std::vector<uint32_t> face_stamp_;

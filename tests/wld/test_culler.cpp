@@ -174,5 +174,62 @@ TEST(Culler, ModeNamesRoundTrip)
     EXPECT_FALSE(parse_cull_mode("everything").has_value());
 }
 
+TEST_F(CullE1m1, CameraExactlyOnASplitPlaneGetsTheTieRulesRegion)
+{
+    // The player start projected onto the plane of an axial node on its path (an axial plane so
+    // the point is exactly on it: the other two terms of the dot product are exactly 0). The
+    // deepest such node whose projected point still reaches that node and lies in a region.
+    ASSERT_EQ(zone_->tree.tie_rule, TieRule::OnPlaneGoesBack);
+    const glm::vec3 start{480, -352, 88};
+    std::vector<PathStep> path, q_path;
+    ASSERT_TRUE(trace_point(zone_->tree, start, path).in_region());
+    std::optional<glm::vec3> on_plane;
+    uint32_t node_index = 0;
+    for (auto step = path.rbegin(); step != path.rend() && !on_plane; ++step) {
+        const BspNode& node = zone_->tree.nodes[step->node];
+        int axis = -1;
+        for (int a = 0; a < 3; ++a)
+            if (std::abs(node.normal[a]) == 1.0f)
+                axis = a;
+        if (axis < 0)
+            continue;
+        glm::vec3 q = start;
+        q[axis] = node.dist * node.normal[axis];
+        const float d = node.normal.x * q.x + node.normal.y * q.y + node.normal.z * q.z - node.dist;
+        if (d != 0.0f || !locate_point(zone_->tree, q).in_region())
+            continue;
+        trace_point(zone_->tree, q, q_path);
+        const auto at =
+            std::find_if(q_path.begin(), q_path.end(), [&](const PathStep& s) { return s.node == step->node; });
+        if (at == q_path.end())
+            continue;
+        EXPECT_EQ(at->side, 1) << "on the plane of node " << step->node << ": Quake sends d == 0 to the back child";
+        on_plane = q;
+        node_index = step->node;
+    }
+    ASSERT_TRUE(on_plane.has_value()) << "no axial node on the player start's path gives an in-world point";
+
+    const PointLocation expected = locate_point(zone_->tree, *on_plane);
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    std::vector<uint32_t> visible;
+    for (float yaw : {0.0f, 90.0f, 180.0f, 270.0f}) {
+        Camera camera;
+        camera.position = *on_plane;
+        camera.yaw_degrees = yaw;
+        const CullStats s = culler.cull(camera, {CullMode::PvsFrustum, false}, visible);
+        EXPECT_EQ(s.camera, CameraPlace::InRegion) << "node " << node_index;
+        EXPECT_EQ(s.region, expected.region) << "node " << node_index << ", yaw " << yaw;
+        EXPECT_TRUE(s.pvs_used);
+        EXPECT_FALSE(visible.empty()) << "yaw " << yaw;
+    }
+    // Before the frustum (which may drop the camera's own region when it lies behind the camera),
+    // the PVS stage keeps the region's own row, which holds the region itself.
+    Camera camera;
+    camera.position = *on_plane;
+    const CullStats pvs_only = culler.cull(camera, {CullMode::Pvs, false}, visible);
+    EXPECT_EQ(pvs_only.region, expected.region);
+    EXPECT_TRUE(std::binary_search(visible.begin(), visible.end(), uint32_t(expected.region)));
+}
+
 } // namespace
 } // namespace pvs

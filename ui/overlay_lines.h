@@ -1,0 +1,49 @@
+// Lines drawn over a rendered Image, on the CPU after read-back: the locked culling camera's
+// view volume (render_culled in ui/software_renderer.h), and anything else an overlay needs.
+//
+// Pixel coordinates: pixel (i, j) covers [i, i+1) x [j, j+1), x to the right, y down; the
+// image's own rows are top to bottom. A zone point is placed in the image with the view
+// camera's view_projection() (the view volume the renderer draws and the culler tests): NDC x
+// -1 .. 1 maps to 0 .. width, NDC y 1 .. -1 to 0 .. height.
+//
+// Clipping: a 3-D segment is first cut to the part in front of the view camera's near plane
+// (view-space depth >= near_distance), so points behind the camera are never projected (their
+// projection would flip through infinity); the projected segment is then cut to the image in
+// double precision before any rounding, so far-off endpoints cost nothing and cannot overflow.
+// The far plane does not clip: a line beyond it is still drawn where it projects.
+#pragma once
+
+#include "ui/software_renderer.h"
+#include "visibility/camera.h"
+
+#include <array>
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace pvs::ui {
+
+// The colour render_culled draws a locked culling camera's view volume in: yellow, which no
+// kFlagTints entry comes close to.
+inline constexpr uint32_t kLockedFrustumColor = 0xFFFF00;
+
+// Sets the pixels of the segment a-b (pixel coordinates, see above) that lie in the image to
+// `rgb` (0xRRGGBB, alpha 255): Bresenham between the pixels that hold the ends of the part of
+// the segment inside the image, so both end pixels are set when they are in the image. Returns
+// how many pixels were set (0 for a segment that misses the image or has a non-finite end).
+uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb);
+
+// The zone segment a-b seen from `view` (its aspect should be the image's), clipped to the near
+// plane and the image. Returns how many pixels were set: 0 when it lies entirely behind the near
+// plane or projects off the image.
+uint32_t draw_line_3d(Image& image, const Camera& view, const glm::vec3& a, const glm::vec3& b, uint32_t rgb);
+
+// The corners of `camera`'s view volume: the near rectangle then the far one, each bottom-left,
+// bottom-right, top-right, top-left as that camera sees them. The same volume as
+// camera.view_projection() (glm::lookAt with z up, glm::perspective), built from its vectors.
+std::array<glm::vec3, 8> frustum_corners(const Camera& camera);
+
+// The 12 edges of `frustum`'s view volume seen from `view`. Returns the pixels set.
+uint32_t draw_frustum(Image& image, const Camera& view, const Camera& frustum, uint32_t rgb);
+
+} // namespace pvs::ui
