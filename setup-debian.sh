@@ -8,7 +8,7 @@ packages=(
   libglm-dev zlib1g-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libirrlicht-dev libglfw3-dev libimgui-dev
-  xvfb xauth
+  libgl-dev xvfb xauth libgl1-mesa-dri
 )
 
 missing=()

@@ -3,11 +3,12 @@
 #include "app/cmd_convert.h"
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
+#include "app/cmd_inspect.h"
 #include "app/cmd_render.h"
 #include "app/cmd_walk.h"
 
 #include <CLI/CLI.hpp>
-#include <cstdio>
+#include <string>
 
 int main(int argc, char** argv)
 {
@@ -20,11 +21,12 @@ int main(int argc, char** argv)
     pvs::app::register_gen_command(app, exit_code);
     pvs::app::register_walk_command(app, exit_code);
     pvs::app::register_convert_command(app, exit_code);
+    pvs::app::register_inspect_command(app, exit_code);
+    std::string zone_path; // `pvscope FILE`: the inspector on FILE
+    app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");
 
     CLI11_PARSE(app, argc, argv);
-    if (app.get_subcommands().empty()) {
-        std::printf("%s\nThe inspector window is not built yet; use a subcommand, e.g. `pvscope info FILE.bsp`.\n",
-                    app.help().c_str());
-    }
+    if (app.get_subcommands().empty())
+        exit_code = pvs::app::run_inspect(zone_path);
     return exit_code;
 }

@@ -1,0 +1,132 @@
+// The panels with ImGui's null backend (as imgui's example_null): a context with the font atlas
+// built and io.DisplaySize set, NewFrame / draw / Render, no window and no GPU. Checks that every
+// panel draws, that the viewport panel drives the state (render size, keys, picking) and that
+// the culling panel's switches reach it.
+#include "ui/gui/panels.h"
+
+#include <gtest/gtest.h>
+
+#include <imgui_internal.h>
+
+namespace pvs {
+namespace {
+
+using gui::InspectorPanels;
+using gui::InspectorState;
+
+struct NullBackend : ::testing::Test {
+    void SetUp() override
+    {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;
+        io.DisplaySize = {1024.0f, 640.0f};
+        io.DeltaTime = 1.0f / 30.0f;
+        unsigned char* pixels = nullptr;
+        int width = 0, height = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+        panels.viewport.upload = [this](const ui::Image& image) {
+            ++uploads;
+            last_upload = {image.width, image.height};
+            return ImTextureID(&uploads); // any non-null id: nothing draws it
+        };
+        state.open_demo();
+    }
+    void TearDown() override { ImGui::DestroyContext(); }
+
+    // One whole ImGui frame around `draw`.
+    template <typename Draw>
+    const ImDrawData* frame(Draw draw)
+    {
+        ImGui::NewFrame();
+        draw();
+        ImGui::Render();
+        return ImGui::GetDrawData();
+    }
+
+    InspectorState state;
+    InspectorPanels panels;
+    int uploads = 0;
+    std::pair<uint32_t, uint32_t> last_upload{0, 0};
+};
+
+TEST_F(NullBackend, EveryPanelDraws)
+{
+    for (int i = 0; i < 3; ++i) { // the first frames size and place the windows
+        const ImDrawData* data = frame([&] {
+            ImGui::SetNextWindowSize({400, 300}, ImGuiCond_FirstUseEver);
+            gui::draw_viewport_panel(state, panels.viewport, 1.0f / 30.0f);
+            gui::draw_zone_panel(state, panels.zone);
+            gui::draw_culling_panel(state, panels.culling);
+            gui::draw_region_panel(state, panels.region);
+        });
+        ASSERT_NE(data, nullptr);
+        EXPECT_TRUE(data->Valid);
+        if (i == 2) {
+            EXPECT_GT(data->TotalVtxCount, 1000); // text and widgets of four panels
+            EXPECT_EQ(data->CmdListsCount, 4);
+        }
+    }
+    for (const char* name : {"Viewport", "Zone", "Culling", "Region"})
+        EXPECT_NE(ImGui::FindWindowByName(name), nullptr) << name;
+    EXPECT_EQ(state.totals().frames, 3u); // the viewport rendered once per frame
+    EXPECT_EQ(uploads, 3);
+    EXPECT_EQ(last_upload.first, state.image().width);
+    EXPECT_GE(panels.region.row_region, -1);
+}
+
+TEST_F(NullBackend, ViewportRendersAtItsSizeAndTakesKeys)
+{
+    for (int i = 0; i < 2; ++i)
+        frame([&] { gui::draw_inspector(state, panels, 1.0f / 30.0f); });
+    const ImGuiWindow* viewport = ImGui::FindWindowByName("Viewport");
+    ASSERT_NE(viewport, nullptr);
+    const ImVec2 inner = viewport->ContentRegionRect.GetSize();
+    EXPECT_NEAR(float(state.image().width), inner.x, 1.0f);
+    EXPECT_NEAR(float(state.image().height), inner.y, 1.0f);
+    EXPECT_GT(state.image().width, 300u);
+
+    // W held while the viewport has focus: the camera flies forward one frame's worth.
+    const glm::vec3 start = state.view_camera().position;
+    const glm::vec3 forward = state.view_camera().forward();
+    ImGui::GetIO().KeysDown['W'] = true;
+    frame([&] {
+        ImGui::SetNextWindowFocus();
+        gui::draw_viewport_panel(state, panels.viewport, 0.5f);
+    });
+    ImGui::GetIO().KeysDown['W'] = false;
+    const glm::vec3 moved = state.view_camera().position - start;
+    EXPECT_NEAR(glm::dot(moved, forward), state.move_speed() * 0.5f, 1e-2f);
+}
+
+TEST_F(NullBackend, ClickInTheViewportPicks)
+{
+    for (int i = 0; i < 2; ++i)
+        frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    const ImGuiWindow* viewport = ImGui::FindWindowByName("Viewport");
+    ASSERT_NE(viewport, nullptr);
+    const ImVec2 centre = viewport->ContentRegionRect.GetCenter();
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = centre;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); }); // hover first
+    io.MouseDown[0] = true;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    io.MouseDown[0] = false;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    EXPECT_NE(state.selection().face, ui::kNoFace);
+    EXPECT_GE(state.selection().region, 0);
+    EXPECT_EQ(state.shown_region(), state.selection().region);
+}
+
+TEST_F(NullBackend, RegionPanelListsTheRowOfAZoneWithAPvs)
+{
+    // The demo zone has no PVS: the panel says so and lists nothing.
+    for (int i = 0; i < 2; ++i)
+        frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    EXPECT_TRUE(panels.region.row.empty());
+    EXPECT_EQ(panels.region.row_region, state.shown_region());
+}
+
+} // namespace
+} // namespace pvs

@@ -1,0 +1,212 @@
+#include "ui/gui/inspector_app.h"
+
+#include "ui/gui/inspector_state.h"
+#include "ui/gui/panels.h"
+
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+// Only OpenGL 1.1 calls (textures, read-back) are made here, straight from libGL; the ImGui
+// backend loads what it needs itself.
+#include <GL/gl.h>
+#include <stb_image_write.h> // Debian's libstb, which ImGui links already
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace pvs::gui {
+
+namespace {
+
+void glfw_error(int code, const char* description) { std::fprintf(stderr, "pvscope: GLFW error %d: %s\n", code, description); }
+
+// Owns GLFW, the window and the ImGui context with its backends; tears them down in order.
+struct Platform {
+    GLFWwindow* window = nullptr;
+    bool imgui = false, glfw_backend = false, gl_backend = false;
+    std::vector<std::string> dropped; // paths dropped on the window, not yet opened
+
+    ~Platform()
+    {
+        if (gl_backend)
+            ImGui_ImplOpenGL3_Shutdown();
+        if (glfw_backend)
+            ImGui_ImplGlfw_Shutdown();
+        if (imgui)
+            ImGui::DestroyContext();
+        if (window)
+            glfwDestroyWindow(window);
+        glfwTerminate();
+    }
+};
+
+void on_drop(GLFWwindow* window, int count, const char** paths)
+{
+    auto* platform = static_cast<Platform*>(glfwGetWindowUserPointer(window));
+    for (int i = 0; i < count; ++i)
+        platform->dropped.emplace_back(paths[i]);
+}
+
+bool open_platform(Platform& platform, const InspectorOptions& options)
+{
+    glfwSetErrorCallback(glfw_error);
+    if (!glfwInit())
+        return false;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    platform.window = glfwCreateWindow(int(options.width), int(options.height), "pvscope", nullptr, nullptr);
+    if (!platform.window)
+        return false;
+    glfwMakeContextCurrent(platform.window);
+    glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
+    glfwSetWindowUserPointer(platform.window, &platform);
+    glfwSetDropCallback(platform.window, on_drop);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    platform.imgui = true;
+    ImGui::GetIO().IniFilename = nullptr; // the layout is tiled from the window size
+    ImGui::StyleColorsDark();
+    platform.glfw_backend = ImGui_ImplGlfw_InitForOpenGL(platform.window, true);
+    platform.gl_backend = platform.glfw_backend && ImGui_ImplOpenGL3_Init("#version 130");
+    return platform.gl_backend;
+}
+
+// The viewport's texture: one GL texture, re-specified when the picture's size changes.
+struct ViewportTexture {
+    GLuint id = 0;
+    uint32_t width = 0, height = 0;
+
+    ~ViewportTexture()
+    {
+        if (id)
+            glDeleteTextures(1, &id);
+    }
+    ImTextureID upload(const ui::Image& image)
+    {
+        if (!id) {
+            glGenTextures(1, &id);
+            glBindTexture(GL_TEXTURE_2D, id);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        }
+        glBindTexture(GL_TEXTURE_2D, id);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        const auto w = GLsizei(image.width), h = GLsizei(image.height);
+        if (image.width != width || image.height != height) {
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+            width = image.width;
+            height = image.height;
+        } else {
+            glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+        }
+        return reinterpret_cast<ImTextureID>(static_cast<intptr_t>(id));
+    }
+};
+
+// Writes the whole window as the back buffer holds it now to an RGB PNG (no alpha: a window
+// has none, and RGB at stb's highest compression keeps a README screenshot small).
+bool save_window_png(GLFWwindow* window, const std::string& path)
+{
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window, &width, &height);
+    const size_t row = size_t(width) * 3;
+    std::vector<uint8_t> bottom_up(row * size_t(height)), top_down(bottom_up.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data());
+    for (size_t y = 0; y < size_t(height); ++y)
+        std::copy_n(bottom_up.data() + (size_t(height) - 1 - y) * row, row, top_down.data() + y * row);
+    stbi_write_png_compression_level = 9;
+    return stbi_write_png(path.c_str(), width, height, 3, top_down.data(), int(row)) != 0;
+}
+
+int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& options)
+{
+    ViewportTexture texture;
+    InspectorPanels panels;
+    panels.viewport.upload = [&texture](const ui::Image& image) { return texture.upload(image); };
+    panels.zone.open_path = options.zone_path;
+    int frames = 0;
+    uint64_t titled_zone = 0;
+    while (!glfwWindowShouldClose(platform.window)) {
+        glfwPollEvents();
+        for (const std::string& path : platform.dropped) {
+            panels.zone.open_path = path;
+            state.open_zone(path);
+        }
+        platform.dropped.clear();
+        if (state.has_zone() && state.zone_generation() != titled_zone) {
+            titled_zone = state.zone_generation();
+            glfwSetWindowTitle(platform.window, ("pvscope - " + state.zone().source.path).c_str());
+        }
+
+        ImGui_ImplOpenGL3_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        // Scripted frames get a fixed time step, so a screenshot does not depend on the machine.
+        draw_inspector(state, panels, options.screenshot.empty() ? ImGui::GetIO().DeltaTime : 1.0f / 30.0f);
+        ImGui::Render();
+
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(platform.window, &width, &height);
+        glViewport(0, 0, width, height);
+        glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+        if (!options.screenshot.empty() && ++frames >= options.frames) {
+            if (!save_window_png(platform.window, options.screenshot)) {
+                std::fprintf(stderr, "pvscope: error: cannot write %s\n", options.screenshot.c_str());
+                return 1;
+            }
+            std::printf("pvscope: wrote %s (%d frames)\n", options.screenshot.c_str(), frames);
+            return 0;
+        }
+        glfwSwapBuffers(platform.window);
+    }
+    return 0;
+}
+
+} // namespace
+
+int run_inspector(const InspectorOptions& options)
+{
+    InspectorState state;
+    if (options.zone_path.empty())
+        state.open_demo();
+    else if (!state.open_zone(options.zone_path)) {
+        std::fprintf(stderr, "pvscope: error: %s\n", state.error().c_str());
+        return 1;
+    }
+    state.cull_mode = options.cull_mode;
+    if (options.camera) {
+        const auto& [x, y, z, yaw, pitch] = *options.camera;
+        Camera& view = state.view_camera();
+        view.position = {x, y, z};
+        view.yaw_degrees = yaw;
+        view.pitch_degrees = pitch;
+    }
+
+    Platform platform;
+    if (!open_platform(platform, options)) {
+        std::fprintf(stderr, "pvscope: error: cannot open a window with an OpenGL 3 context "
+                             "(no display? try xvfb-run, or use a subcommand such as `pvscope info`)\n");
+        return 1;
+    }
+    try {
+        return run_loop(platform, state, options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
+        return 1;
+    }
+}
+
+} // namespace pvs::gui

@@ -1,0 +1,34 @@
+// The inspector's window: GLFW owns it and an OpenGL 3 context, Dear ImGui draws the panels
+// (ui/gui/panels.h) through its GLFW and OpenGL3 backends, and the viewport's software-rendered
+// picture is uploaded to an OpenGL texture each frame. Everything the panels show comes from an
+// InspectorState; this file is only the platform shell and the frame loop:
+//   poll events -> open dropped files -> ImGui new frame -> draw_inspector -> ImGui render
+//   -> (screenshot) -> swap
+#pragma once
+
+#include "visibility/culler.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace pvs::gui {
+
+struct InspectorOptions {
+    std::string zone_path; // empty: the built-in demo zone
+    uint32_t width = 1280, height = 800;
+    std::optional<std::array<float, 5>> camera; // x, y, z, yaw, pitch; else the zone's start view
+    CullMode cull_mode = CullMode::PvsFrustum;
+    // When set: draw `frames` frames, write the whole window (glReadPixels of the back buffer)
+    // to this PNG and return, without waiting for the user. For tests and the README.
+    std::string screenshot;
+    int frames = 5;
+};
+
+// Opens the window and runs until it is closed or the screenshot is written. Returns the
+// process exit code (0 success, 1 when the window, the context or the screenshot fails, or the
+// zone cannot be opened); errors are printed to stderr.
+int run_inspector(const InspectorOptions& options);
+
+} // namespace pvs::gui

@@ -1,0 +1,332 @@
+#include "ui/gui/inspector_state.h"
+
+#include "visibility/region_lookup.h"
+#include "wld/gen/generate_zone.h"
+#include "wld/zone_file.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace pvs::gui {
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// CSR inverse of the zone's region -> faces lists: face -> regions, ascending.
+void build_face_regions(const Zone& zone, std::vector<uint32_t>& offsets, std::vector<uint32_t>& regions)
+{
+    const size_t faces = zone.mesh.faces.size();
+    offsets.assign(faces + 1, 0);
+    for (uint32_t face : zone.region_faces)
+        if (face < faces)
+            ++offsets[face + 1];
+    for (size_t f = 0; f < faces; ++f)
+        offsets[f + 1] += offsets[f];
+    regions.assign(offsets[faces], 0);
+    std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
+    for (uint32_t r = 0; r < zone.region_count(); ++r)
+        for (uint32_t face : zone.faces_of_region(r))
+            if (face < faces)
+                regions[fill[face]++] = r; // regions ascend, so each face's list does too
+}
+
+// How far a point can go from `from` along the horizontal `direction` and stay in regions
+// (sampled every `step`, up to `limit`).
+float free_distance(const Zone& zone, glm::vec3 from, glm::vec3 direction, float step, float limit)
+{
+    float t = 0.0f;
+    while (t + step <= limit && locate_point(zone.tree, from + direction * (t + step)).in_region())
+        t += step;
+    return t;
+}
+
+struct StartView {
+    glm::vec3 position;
+    float yaw_degrees;
+};
+
+// The view a zone opens with: from the centres of its largest regions (whose centre is in them;
+// a Quake leaf's box can stick out of its convex volume), the one of 8 horizontal directions
+// with the longest free line of sight, so the first picture looks down a room or corridor
+// rather than at a wall. About 32 x 8 x 512 point lookups.
+std::optional<StartView> find_start_view(const Zone& zone, float diagonal)
+{
+    constexpr size_t kCandidates = 32;
+    constexpr int kDirections = 8;
+    std::vector<std::pair<float, uint32_t>> by_volume; // (volume, region)
+    for (uint32_t r = 0; r < zone.region_count(); ++r) {
+        const Aabb& b = zone.regions[r].bounds;
+        if (b.empty() || zone.regions[r].flags & kRegionSky)
+            continue;
+        const glm::vec3 s = b.size();
+        by_volume.emplace_back(s.x * s.y * s.z, r);
+    }
+    std::sort(by_volume.begin(), by_volume.end(), std::greater<>());
+    const float step = std::max(diagonal / 512.0f, 1.0f), limit = diagonal / 2.0f;
+    std::optional<StartView> best;
+    float best_distance = -1.0f;
+    size_t tried = 0;
+    for (const auto& [volume, r] : by_volume) {
+        const glm::vec3 centre = zone.regions[r].bounds.center();
+        if (locate_point(zone.tree, centre).region != int32_t(r))
+            continue;
+        for (int d = 0; d < kDirections; ++d) {
+            const float yaw = float(d) * (360.0f / kDirections);
+            const glm::vec3 direction{std::cos(glm::radians(yaw)), std::sin(glm::radians(yaw)), 0.0f};
+            const float distance = free_distance(zone, centre, direction, step, limit);
+            if (distance > best_distance) {
+                best_distance = distance;
+                best = StartView{centre, yaw};
+            }
+        }
+        if (++tried == kCandidates)
+            break;
+    }
+    return best;
+}
+
+} // namespace
+
+InspectorState::InspectorState() = default;
+InspectorState::~InspectorState() = default;
+
+// ---- Zone --------------------------------------------------------------------------------------
+
+bool InspectorState::open_zone(const std::string& path)
+{
+    try {
+        const auto start = std::chrono::steady_clock::now();
+        auto zone = std::make_unique<Zone>(load_zone(path));
+        adopt_zone(std::move(zone), ms_since(start));
+        return true;
+    } catch (const std::exception& e) { // FileError for bad files; bad_alloc and the like too
+        error_ = e.what();
+        return false;
+    }
+}
+
+void InspectorState::open_demo()
+{
+    const auto start = std::chrono::steady_clock::now();
+    auto zone = std::make_unique<Zone>(gen::generate_zone(gen::demo_zone_params()));
+    adopt_zone(std::move(zone), ms_since(start));
+}
+
+void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
+{
+    // The culler and the renderer's scene borrow the old zone: drop them before it goes.
+    culler_.reset();
+    if (renderer_)
+        renderer_->forget_zone();
+    zone_ = std::move(zone);
+    ++zone_generation_;
+    load_ms_ = load_ms;
+    error_.clear();
+    zone_stats_ = compute_zone_stats(*zone_);
+    build_face_regions(*zone_, face_region_offsets_, face_regions_);
+    culler_ = std::make_unique<Culler>(*zone_, zone_->baked_pvs ? &*zone_->baked_pvs : nullptr);
+
+    image_ = {};
+    visible_.clear();
+    last_cull_ = {};
+    last_render_ = {};
+    history_.clear();
+    totals_ = {};
+    selection_ = {};
+    locked_ = false;
+    const glm::vec3 size = zone_stats_.bounds.empty() ? glm::vec3(3200.0f) : zone_stats_.bounds.size();
+    set_move_speed(glm::length(size) / 10.0f);
+    reset_camera();
+}
+
+std::span<const uint32_t> InspectorState::regions_of_face(uint32_t face) const
+{
+    if (face + 1 >= face_region_offsets_.size())
+        return {};
+    return std::span<const uint32_t>(face_regions_)
+        .subspan(face_region_offsets_[face], face_region_offsets_[face + 1] - face_region_offsets_[face]);
+}
+
+uint64_t InspectorState::region_triangles(uint32_t region) const
+{
+    if (!zone_ || region >= zone_->region_count())
+        return 0;
+    uint64_t triangles = 0;
+    for (uint32_t face : zone_->faces_of_region(region))
+        if (face < zone_->mesh.faces.size())
+            triangles += zone_->mesh.faces[face].triangle_count;
+    return triangles;
+}
+
+// ---- Cameras -----------------------------------------------------------------------------------
+
+void InspectorState::set_lock(bool locked)
+{
+    locked_ = locked;
+    if (!locked_)
+        cull_ = view_;
+}
+
+void InspectorState::set_move_speed(float speed)
+{
+    move_speed_ = std::isfinite(speed) ? std::clamp(speed, 1.0f, 100000.0f) : 320.0f;
+}
+
+void InspectorState::step_camera(const CameraInput& input, float dt_seconds)
+{
+    if (input.wheel != 0.0f)
+        set_move_speed(move_speed_ * std::pow(kSpeedStep, input.wheel));
+    // Mouse right turns right: yaw is counter-clockwise about +z, so it decreases.
+    view_.yaw_degrees = std::remainder(view_.yaw_degrees - input.look.x * kLookDegreesPerPixel, 360.0f);
+    view_.pitch_degrees =
+        std::clamp(view_.pitch_degrees - input.look.y * kLookDegreesPerPixel, -kMaxPitchDegrees, kMaxPitchDegrees);
+
+    const glm::vec3 forward = view_.forward();
+    const float yaw = glm::radians(view_.yaw_degrees);
+    const glm::vec3 right{std::sin(yaw), -std::cos(yaw), 0.0f}; // forward's horizontal part turned -90°
+    glm::vec3 move{0.0f};
+    move += forward * (float(input.forward) - float(input.back));
+    move += right * (float(input.right) - float(input.left));
+    move.z += float(input.up) - float(input.down);
+    if (glm::length(move) > 0.0f && dt_seconds > 0.0f)
+        view_.position += glm::normalize(move) * move_speed_ * (input.fast ? kFastFactor : 1.0f) * dt_seconds;
+    if (!locked_)
+        cull_ = view_;
+}
+
+void InspectorState::reset_camera()
+{
+    view_ = Camera{};
+    view_.aspect = float(width_) / float(height_);
+    if (zone_ && !zone_stats_.bounds.empty()) {
+        const float diagonal = glm::length(zone_stats_.bounds.size());
+        view_.far_distance = std::max(view_.far_distance, diagonal * 2.0f);
+        view_.position = zone_stats_.bounds.center();
+        if (const auto start = find_start_view(*zone_, diagonal)) {
+            view_.position = start->position;
+            view_.yaw_degrees = start->yaw_degrees;
+            view_.pitch_degrees = -10.0f; // a little floor in the picture
+        }
+    }
+    cull_ = view_;
+}
+
+void InspectorState::go_to_region(uint32_t region)
+{
+    if (!zone_ || region >= zone_->region_count() || zone_->regions[region].bounds.empty())
+        return;
+    view_.position = zone_->regions[region].bounds.center();
+    if (!locked_)
+        cull_ = view_;
+}
+
+// ---- Frame -------------------------------------------------------------------------------------
+
+void InspectorState::set_viewport_size(uint32_t width, uint32_t height)
+{
+    width_ = std::clamp<uint32_t>(width, 1, 8192);
+    height_ = std::clamp<uint32_t>(height, 1, 8192);
+}
+
+void InspectorState::ensure_renderer()
+{
+    if (renderer_ && renderer_->width() == width_ && renderer_->height() == height_)
+        return;
+    renderer_.reset(); // one Irrlicht device at a time
+    renderer_ = std::make_unique<ui::SoftwareRenderer>(width_, height_);
+}
+
+const CullStats& InspectorState::frame()
+{
+    if (!zone_)
+        return last_cull_;
+    view_.aspect = float(width_) / float(height_);
+    if (!locked_)
+        cull_ = view_;
+
+    last_cull_ = culler_->cull(cull_, {cull_mode, true}, visible_);
+    try {
+        ensure_renderer();
+        image_ = renderer_->render(*zone_, view_, visible_, render_mode);
+        last_render_ = renderer_->last_stats();
+    } catch (const std::exception& e) { // no renderer, or an ID render of a zone too large to encode
+        error_ = e.what();
+        image_ = {};
+        last_render_ = {};
+    }
+    ++frame_number_;
+
+    const CullStats& s = last_cull_;
+    const FrameTimes times{float(s.lookup_us), float(s.pvs_us), float(s.frustum_us), float(last_render_.draw_ms)};
+    history_.push(times);
+    CullTotals& t = totals_;
+    ++t.frames;
+    t.lookup_us += s.lookup_us;
+    t.pvs_us += s.pvs_us;
+    t.frustum_us += s.frustum_us;
+    t.render_ms += last_render_.draw_ms;
+    t.max_cull_us = std::max(t.max_cull_us, double(times.cull_us()));
+    t.max_render_ms = std::max(t.max_render_ms, last_render_.draw_ms);
+    t.regions_after_pvs += s.regions_after_pvs;
+    t.regions_drawn += s.regions_after_frustum;
+    t.triangles_after_pvs += s.triangles_after_pvs;
+    t.triangles_drawn += s.triangles_after_frustum;
+    t.frames_in_region += s.camera == CameraPlace::InRegion ? 1 : 0;
+    t.frames_pvs_used += s.pvs_used ? 1 : 0;
+    return last_cull_;
+}
+
+// ---- Selection ---------------------------------------------------------------------------------
+
+std::optional<Selection> InspectorState::pick(uint32_t x, uint32_t y)
+{
+    selection_ = {};
+    if (!zone_ || !renderer_ || x >= image_.width || y >= image_.height || renderer_->width() != image_.width ||
+        renderer_->height() != image_.height)
+        return std::nullopt;
+    // The same camera and visible set as the picture, so what is picked is what was drawn.
+    uint32_t face = ui::kNoFace;
+    try {
+        face = ui::face_at(renderer_->render(*zone_, view_, visible_, ui::RenderMode::IdBuffer), x, y);
+    } catch (const std::exception& e) { // more faces than an ID buffer can encode
+        error_ = e.what();
+    }
+    if (face == ui::kNoFace)
+        return std::nullopt;
+    selection_.face = face;
+    const auto regions = regions_of_face(face);
+    selection_.face_regions.assign(regions.begin(), regions.end());
+    // The region that drew it: the first visible one (ascending), as RegionColors colours it.
+    for (uint32_t r : regions)
+        if (std::binary_search(visible_.begin(), visible_.end(), r)) {
+            selection_.region = int32_t(r);
+            break;
+        }
+    if (selection_.region < 0 && !regions.empty())
+        selection_.region = int32_t(regions.front());
+    return selection_;
+}
+
+void InspectorState::select_region(int32_t region)
+{
+    selection_ = {};
+    if (zone_ && region >= 0 && size_t(region) < zone_->region_count())
+        selection_.region = region;
+}
+
+int32_t InspectorState::shown_region() const
+{
+    if (selection_.region >= 0)
+        return selection_.region;
+    return last_cull_.region;
+}
+
+} // namespace pvs::gui
