@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 namespace pvs {
 
@@ -36,7 +38,8 @@ std::optional<CullMode> parse_cull_mode(const std::string& name)
 }
 
 Culler::Culler(const Zone& zone, const Pvs* pvs)
-    : zone_(&zone), pvs_(pvs), locator_(zone.tree, zone.bounds()), face_stamp_(zone.mesh.faces.size(), 0)
+    : zone_(&zone), pvs_(pvs), locator_(zone.tree, zone.bounds()), zone_bounds_(zone.bounds()),
+      face_stamp_(zone.mesh.faces.size(), 0)
 {
     if (pvs_ && pvs_->region_count() == zone.region_count())
         cursor_.emplace(*pvs_);
@@ -58,6 +61,13 @@ uint64_t Culler::count_triangles(const std::vector<uint32_t>& regions)
                 triangles += zone_->mesh.faces[f].triangle_count;
             }
     return triangles;
+}
+
+bool Culler::far_plane_reaches_everything(const Camera& camera) const
+{
+    // The farthest corner of the zone's box from the camera, against the far distance.
+    const glm::vec3 d = glm::max(glm::abs(zone_bounds_.min - camera.position), glm::abs(zone_bounds_.max - camera.position));
+    return glm::dot(d, d) < camera.far_distance * camera.far_distance;
 }
 
 CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::vector<uint32_t>& visible)
@@ -101,9 +111,15 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     const bool want_frustum = options.mode == CullMode::Frustum || options.mode == CullMode::PvsFrustum;
     if (want_frustum) {
         const Frustum frustum = Frustum::from_view_projection(camera.view_projection());
-        for (uint32_t r : candidates_)
-            if (frustum.intersects(zone_->regions[r].bounds))
-                visible.push_back(r);
+        if (far_plane_reaches_everything(camera)) {
+            for (uint32_t r : candidates_)
+                if (frustum.intersects_sides(zone_->regions[r].bounds))
+                    visible.push_back(r);
+        } else {
+            for (uint32_t r : candidates_)
+                if (frustum.intersects(zone_->regions[r].bounds))
+                    visible.push_back(r);
+        }
     } else {
         visible = candidates_;
     }

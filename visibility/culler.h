@@ -63,10 +63,12 @@ public:
 
 private:
     uint64_t count_triangles(const std::vector<uint32_t>& regions);
+    bool far_plane_reaches_everything(const Camera& camera) const;
 
     const Zone* zone_;
     const Pvs* pvs_;
     RegionLocator locator_;
+    Aabb zone_bounds_;
     std::optional<PvsRowCursor> cursor_;
     std::vector<uint32_t> candidates_;
     std::vector<uint32_t> face_stamp_; // per face: the last counting pass that saw it

@@ -98,3 +98,35 @@ TEST(Frustum, BoxBehindTheCameraIsCulled)
 
 } // namespace
 } // namespace pvs
+
+namespace pvs {
+namespace {
+
+TEST(Frustum, SidePlanesAloneAreConservativeAndStillRejectWhatIsBehind)
+{
+    const glm::mat4 vp = glm::perspective(glm::radians(70.0f), 4.0f / 3.0f, 1.0f, 500.0f) *
+                         glm::lookAt(glm::vec3(10, 20, 30), glm::vec3(100, -40, 0), glm::vec3(0, 0, 1));
+    const Frustum f = Frustum::from_view_projection(vp);
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<float> u(-400.0f, 400.0f), s(0.5f, 40.0f);
+    int disagreements = 0;
+    for (int i = 0; i < 20000; ++i) {
+        Aabb box;
+        const glm::vec3 c{u(rng), u(rng), u(rng)};
+        box.grow(c);
+        box.grow(c + glm::vec3(s(rng), s(rng), s(rng)));
+        // The side test may only add boxes: ones in the slab before the near plane or beyond the far one.
+        if (f.intersects(box)) {
+            ASSERT_TRUE(f.intersects_sides(box)) << i;
+        }
+        disagreements += f.intersects(box) != f.intersects_sides(box);
+    }
+    EXPECT_LT(disagreements, 400); // few boxes lie there
+    Aabb behind;
+    behind.grow(glm::vec3(10, 20, 30) - 50.0f * glm::normalize(glm::vec3(90, -60, -30)));
+    behind.grow(behind.min + glm::vec3(2.0f));
+    EXPECT_FALSE(f.intersects_sides(behind));
+}
+
+} // namespace
+} // namespace pvs
