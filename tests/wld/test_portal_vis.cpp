@@ -1,0 +1,622 @@
+// The portal-vis baker (visibility/portal/portal_vis.h):
+//  1. vis.py's example (visdemo): example.prt -> Full, checked against rows written by hand from
+//     the map's geometry and against the PVS baked into example.bsp;
+//  2. a synthetic grid of square rooms with solid pillars: every pair of rooms joined by a
+//     sampled line of sight (clear of every pillar by a unit) must be in the Full PVS (no
+//     missing bit), Full within Fast, the same rows for 1, 2 and 3 threads;
+//  3. real Quake maps, portals built from the tree with SkyPortals::None (the shipped maps'
+//     vis made no portal at sky leaves): Fast and Full, Full within Fast, each row holding its
+//     region, and the numbers against the PVS in the file (bits only ours, only the file's,
+//     means, times), the mean within 10 % of the file's;
+//  4. determinism on a real map (1 and 2 threads), degenerate input, progress and cancellation
+//     (before any work, and in the middle of the flow on end.bsp).
+#include "visibility/portal/portal_vis.h"
+
+#include "tests/support/test_data.h"
+#include "visibility/bit_row.h"
+#include "visibility/portal/portalize.h"
+#include "wld/quake/prt_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <limits>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace pvs {
+namespace {
+
+using Method = VisParams::Method;
+using Rows = std::vector<std::vector<uint64_t>>;
+
+Pvs bake(const PortalSet& set, uint32_t regions, Method method, unsigned threads = 2, VisReport* report = nullptr,
+         int level = 4)
+{
+    VisParams params;
+    params.method = method;
+    params.threads = threads;
+    params.level = level;
+    return bake_portal_vis(set, regions, params, report);
+}
+
+Rows rows_of(const Pvs& pvs)
+{
+    Rows rows(pvs.region_count(), std::vector<uint64_t>(pvs.words_per_row()));
+    for (uint32_t r = 0; r < pvs.region_count(); ++r)
+        pvs.decode_row(r, rows[r]);
+    return rows;
+}
+
+std::vector<uint32_t> members(const std::vector<uint64_t>& row)
+{
+    std::vector<uint32_t> out;
+    bits::for_each_set(row, [&](size_t i) { out.push_back(uint32_t(i)); });
+    return out;
+}
+
+std::string list(const std::vector<uint32_t>& v)
+{
+    std::string s = "{";
+    for (size_t i = 0; i < v.size(); ++i) {
+        if (i > 0)
+            s += ' ';
+        s += std::to_string(v[i]);
+    }
+    s += '}';
+    return s;
+}
+
+// a within b, row by row; returns the number of bits of a missing from b.
+size_t bits_not_in(const Rows& a, const Rows& b)
+{
+    size_t missing = 0;
+    for (size_t r = 0; r < a.size(); ++r)
+        for (size_t w = 0; w < a[r].size(); ++w)
+            missing += size_t(std::popcount(a[r][w] & ~b[r][w]));
+    return missing;
+}
+
+double mean_bits(const Rows& rows)
+{
+    size_t total = 0;
+    for (const auto& row : rows)
+        total += bits::count(row);
+    return rows.empty() ? 0.0 : double(total) / double(rows.size());
+}
+
+// Adds a portal between regions `a` and `b`, its points ordered so that the PRT1 normal
+// ((p0-p1) x (p2-p1)) points into regions[0] = a (`toward_a` is a direction from the portal into a).
+void add_portal(PortalSet& set, int32_t a, int32_t b, std::vector<glm::vec3> pts, glm::vec3 toward_a)
+{
+    const glm::vec3 n = glm::cross(pts[0] - pts[1], pts[2] - pts[1]);
+    if (glm::dot(n, toward_a) < 0.0f)
+        std::reverse(pts.begin(), pts.end());
+    Portal p;
+    p.regions[0] = a;
+    p.regions[1] = b;
+    p.first_point = uint32_t(set.points.size());
+    p.point_count = uint32_t(pts.size());
+    set.points.insert(set.points.end(), pts.begin(), pts.end());
+    set.portals.push_back(p);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. visdemo
+
+// The example map is flat: every room and doorway spans z = -8..72, so visibility is a 2-D
+// question about the floor plan. Rooms (PRT leaf = region; x and y ranges from example.bsp's
+// leaves) and doorways (example.prt):
+//   0: x 880..976, y -272..-176   east room          0|1 at x=880, y -272..-224
+//   1: x 832..880, y -272..-224   short corridor     1|2 at x=832, y -272..-224
+//   2: x 768..832, y -320..-112   north-south hall   2|3 at x=768, y -160..-112 (north door)
+//                                                    2|4 at x=768, y -320..-272 (south door)
+//   3: x 720..768, y -160..-112   north passage      3|5 at x=720, y -160..-112
+//   4: x 720..768, y -320..-272   south passage      4|5 at x=720, y -320..-272
+//   5: x 640..720, y -320..-112   hall               5|6 at x=640, y -288..-224
+//   6: x 592..640, y -288..-224   doorway            6|7 at x=592, y -288..-224
+//   7: x 384..592, y -368..-112   big room           7|8 at x=384, y -176..-112 (north)
+//                                                    7|10 at x=384, y -368..-304 (south)
+//   8: x 144..384, y -176..-112   north corridor     8|9 at y=-176, x 240..336
+//   9: x 240..336, y -304..-176   west link          9|10 at y=-304, x 240..336
+//  10: x 240..384, y -368..-304   south corridor
+// A room sees another when one straight line crosses every doorway of some chain between them
+// (inside the doorway's span). Along a straight line y is monotonic in x, which settles most
+// cases; the rest are small linear inequalities, worked out below.
+const std::vector<std::vector<uint32_t>> kExampleExpected = {
+    // 0: 1, 2 through the corridor. The corridor (two 48-wide doorways 48 apart) allows slopes
+    // |dy/dx| <= 1, so the north door of 2 (x=768, y >= -160) is reached only by the grazing line
+    // (880,-272)-(768,-160): not 3. The south door is reached: 4, 5 (y = -273 + 0.05 (x - 768)
+    // crosses every doorway down to x=592: 6, 7). 10: y(592) >= -288 and y(384) <= -304 with
+    // y(768) <= -272 <= y(832), e.g. slope 0.08 through (592,-287.5): margins of about a unit.
+    // 8, 9: the line would have to rise from the south door both eastwards (to the corridor)
+    // and westwards (to 8's door at y >= -176): not monotonic.
+    {0, 1, 2, 4, 5, 6, 7, 10},
+    // 1: 0, 2 adjacent. 3: (833,-225)-(768,-150) crosses both doors. 4, 5, 6, 7, 10: as for 0
+    // (the same lines pass inside 1). 5 through 3 would need slope >= 1 from the corridor: only
+    // grazing at (720,-112), but 5 is reached through 4 anyway. 8, 9: not monotonic, as for 0.
+    {0, 1, 2, 3, 4, 5, 6, 7, 10},
+    // 2: 0, 1 (horizontal lines through the corridor), 3, 4 adjacent, 5 through either door,
+    // 6, 7 (y = -280 crosses 4|5, 5|6, 6|7). 8: y = -274 + 0.3 (720 - x) crosses 2|4 at -288,
+    // 4|5 at -274, 5|6 at -250, 6|7 at -236 and 7|8 at -173. 10: slope 0.08 through
+    // (592,-287.5). 9 would need a line entering 8 rising westwards to come down to y=-176, or
+    // entering 10 falling westwards to come up to y=-304: not monotonic.
+    {0, 1, 2, 3, 4, 5, 6, 7, 8, 10},
+    // 3: 2, 5 adjacent; 1: (768,-150)-(832,-250). 0: the doors at x=768 (y >= -160) and x=832
+    // (y <= -224) force a slope >= 1, so x=880 is reached at y <= -272: grazing only. 4: its
+    // doors to 2 and to 5 lie on the planes x=768 and x=720 that 3's own doors lie on; a line
+    // cannot cross one plane twice. 6, 7: (740,-130)-(640,-230) crosses 3|5 at -150, 5|6 at
+    // -230, 6|7 at -278. 10: from 3|5 (y >= -160) down to 5|6 (y <= -224) the slope is >= 0.8,
+    // and then y(384) <= -224 - 0.8 * 208 < -368. 8, 9: not monotonic.
+    {1, 2, 3, 5, 6, 7},
+    // 4: 2, 5 adjacent; 0, 1: (740,-280)-(880,-255) crosses 2|4 and the corridor. 3: coplanar
+    // doors, as above. 6, 7: y = -280. 8: the line found for 2 starts in 4 at (740,-280).
+    // 10: as for 2. 9: not monotonic.
+    {0, 1, 2, 4, 5, 6, 7, 8, 10},
+    // 5: 3, 4, 6 adjacent; 2 through either door; 0, 1: (700,-300)-(832,-265) crosses 4|5 and
+    // 2|4 below -272 and the corridor above it. 7 through 6. 8: (700,-250)-(384,-176) crosses
+    // 5|6 at -236, 6|7 at -225 and 7|8 at -176.4. 10: slope 0.08. 9: not monotonic.
+    {0, 1, 2, 3, 4, 5, 6, 7, 8, 10},
+    // 6: 5, 7 adjacent. 0, 1, 2, 4: y = -273 + 0.05 (x - 768). 3: the line through (640,-226)
+    // and (720,-158) starts in 6 at (620,-243). 8: (630,-240)-(384,-175). 10: slope 0.08.
+    // 9: not monotonic.
+    {0, 1, 2, 3, 4, 5, 6, 7, 8, 10},
+    // 7: everything. 9: (400,-120)-(300,-180) crosses 7|8 at -130 and 8|9 at x=307. 3: the line
+    // through (640,-226) and (720,-158) starts in 7 at (580,-277). 0: y = -273 + 0.05 (x - 768).
+    {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10},
+    // 8: 7, 9 adjacent; 10 straight down through 8|9 and 9|10. 6, 5, 4: (370,-160)-(592,-250).
+    // 2: y = -150 - 0.4 (x - 384) crosses 7|8 at -150, 6|7 at -233, 5|6 at -252, 4|5 at -284 and
+    // 2|4 at -304. 0, 1: that line falls eastwards, so it cannot come back up to the corridor
+    // (y >= -272 at x=832). 3: would need to fall to 6|7 and rise to 3|5: not monotonic.
+    {2, 4, 5, 6, 7, 8, 9, 10},
+    // 9: 8, 10 adjacent; 7 through either (e.g. (330,-180)-(384,-150)). Anything east of 7 needs
+    // the line to keep rising eastwards past 8's door (y >= -176, but 6|7 is below -224) or to
+    // keep falling past 10's door (y <= -304, but 6|7 is above -288).
+    {7, 8, 9, 10},
+    // 10: 7, 9 adjacent; 8 straight up through 9. 6, 5, 4, 2, 1, 0: the slope-0.08 line through
+    // (384,-305) and (592,-287.5). 3: from 6|7 (y <= -224) up to 3|5 (y >= -160) the slope is
+    // >= 0.8, which puts x=384 below -368.
+    {0, 1, 2, 4, 5, 6, 7, 8, 9, 10},
+};
+
+TEST(PortalVis, VisdemoMatchesHandDerivedRowsAndTheFile)
+{
+    SHARED_DATA_OR_SKIP(prt_path, "visdemo/example.prt");
+    SHARED_DATA_OR_SKIP(bsp_path, "visdemo/example.bsp");
+    const quake::PrtFile prt = quake::load_prt(prt_path);
+    ASSERT_EQ(prt.leaf_count, 11u);
+    const Zone* zone = test::shared_zone("visdemo/example.bsp");
+    ASSERT_NE(zone, nullptr);
+    ASSERT_TRUE(zone->baked_pvs.has_value());
+    ASSERT_EQ(zone->baked_pvs->region_count(), 11u);
+
+    VisReport full_report, fast_report;
+    const Rows full = rows_of(bake(prt.portals, prt.leaf_count, Method::Full, 2, &full_report));
+    const Rows fast = rows_of(bake(prt.portals, prt.leaf_count, Method::Fast, 2, &fast_report));
+    const Rows file = rows_of(*zone->baked_pvs);
+    EXPECT_EQ(full_report.portals, 12u);
+    EXPECT_EQ(full_report.portals_skipped, 0u);
+    EXPECT_FALSE(full_report.cancelled);
+
+    size_t only_ours = 0, only_file = 0;
+    for (uint32_t r = 0; r < 11; ++r) {
+        EXPECT_EQ(list(members(full[r])), list(kExampleExpected[r])) << "leaf " << r << " (Full vs by hand)";
+        EXPECT_EQ(list(members(full[r])), list(members(file[r]))) << "leaf " << r << " (Full vs example.bsp)";
+        for (uint32_t c = 0; c < 11; ++c) {
+            only_ours += bits::test(full[r], c) && !bits::test(file[r], c);
+            only_file += !bits::test(full[r], c) && bits::test(file[r], c);
+        }
+    }
+    EXPECT_EQ(bits_not_in(full, fast), 0u) << "Full must lie within Fast";
+    std::printf("[ visdemo ] Full: %zu bits only ours, %zu only example.bsp's; mean %.2f (Fast %.2f, file %.2f)\n",
+                only_ours, only_file, full_report.mean_visible, fast_report.mean_visible, mean_bits(file));
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. A grid of rooms with pillars
+
+struct Grid {
+    int w = 0, h = 0;
+    std::vector<int32_t> region; // per cell, -1 = solid pillar
+    uint32_t regions = 0;
+    PortalSet portals;
+    static constexpr float kCell = 64.0f;
+};
+
+// w x h square cells of 64 units, 64 high; each cell solid with probability `solid`. Open
+// neighbours share a full-wall portal.
+Grid make_grid(int w, int h, double solid, uint32_t seed)
+{
+    Grid g;
+    g.w = w;
+    g.h = h;
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    g.region.assign(size_t(w * h), -1);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            if (u(rng) >= solid)
+                g.region[size_t(j * w + i)] = int32_t(g.regions++);
+    const float c = Grid::kCell;
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i) {
+            const int32_t r = g.region[size_t(j * w + i)];
+            if (r < 0)
+                continue;
+            if (i + 1 < w && g.region[size_t(j * w + i + 1)] >= 0) {
+                const float x = float(i + 1) * c, y0 = float(j) * c, y1 = y0 + c;
+                add_portal(g.portals, g.region[size_t(j * w + i + 1)], r,
+                           {{x, y0, 0}, {x, y0, c}, {x, y1, c}, {x, y1, 0}}, {1, 0, 0});
+            }
+            if (j + 1 < h && g.region[size_t((j + 1) * w + i)] >= 0) {
+                const float y = float(j + 1) * c, x0 = float(i) * c, x1 = x0 + c;
+                add_portal(g.portals, r, g.region[size_t((j + 1) * w + i)],
+                           {{x0, y, 0}, {x1, y, 0}, {x1, y, c}, {x0, y, c}}, {0, -1, 0});
+            }
+        }
+    return g;
+}
+
+// Does the 2-D segment a-b stay at least `clearance` away (in x and y) from every solid cell?
+bool clear_line(const Grid& g, glm::dvec2 a, glm::dvec2 b, double clearance)
+{
+    const double c = Grid::kCell;
+    for (int j = 0; j < g.h; ++j)
+        for (int i = 0; i < g.w; ++i) {
+            if (g.region[size_t(j * g.w + i)] >= 0)
+                continue;
+            const glm::dvec2 lo(i * c - clearance, j * c - clearance), hi((i + 1) * c + clearance, (j + 1) * c + clearance);
+            double t0 = 0.0, t1 = 1.0;
+            bool hit = true;
+            for (int k = 0; k < 2 && hit; ++k) {
+                const double d = b[k] - a[k];
+                if (std::abs(d) < 1e-12) {
+                    hit = a[k] > lo[k] && a[k] < hi[k];
+                    continue;
+                }
+                double s0 = (lo[k] - a[k]) / d, s1 = (hi[k] - a[k]) / d;
+                if (s0 > s1)
+                    std::swap(s0, s1);
+                t0 = std::max(t0, s0);
+                t1 = std::min(t1, s1);
+                hit = t0 < t1;
+            }
+            if (hit)
+                return false;
+        }
+    return true;
+}
+
+TEST(PortalVis, GridSampledSightLinesAreInTheFullPvs)
+{
+    const Grid g = make_grid(14, 14, 0.3, 7);
+    ASSERT_GT(g.regions, 80u);
+    VisReport fast_report, full_report;
+    const Rows fast = rows_of(bake(g.portals, g.regions, Method::Fast, 2, &fast_report));
+    const Rows full = rows_of(bake(g.portals, g.regions, Method::Full, 2, &full_report));
+    EXPECT_EQ(bits_not_in(full, fast), 0u);
+
+    // Random sight lines between points of open cells, kept when clear of every pillar by a
+    // unit (ten times ON_EPSILON): each must be in the Full PVS, both ways.
+    std::vector<glm::ivec2> open;
+    for (int j = 0; j < g.h; ++j)
+        for (int i = 0; i < g.w; ++i)
+            if (g.region[size_t(j * g.w + i)] >= 0)
+                open.push_back({i, j});
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<size_t> pick(0, open.size() - 1);
+    std::uniform_real_distribution<double> in_cell(0.0, Grid::kCell);
+    Rows seen(g.regions, std::vector<uint64_t>(bits::words_for(g.regions), 0));
+    size_t clear = 0, missing = 0;
+    for (int s = 0; s < 40000; ++s) {
+        const glm::ivec2 ca = open[pick(rng)], cb = open[pick(rng)];
+        const double c = Grid::kCell;
+        const glm::dvec2 a(ca.x * c + in_cell(rng), ca.y * c + in_cell(rng));
+        const glm::dvec2 b(cb.x * c + in_cell(rng), cb.y * c + in_cell(rng));
+        if (!clear_line(g, a, b, 1.0))
+            continue;
+        ++clear;
+        const int32_t ra = g.region[size_t(ca.y * g.w + ca.x)], rb = g.region[size_t(cb.y * g.w + cb.x)];
+        bits::set(seen[size_t(ra)], size_t(rb));
+        bits::set(seen[size_t(rb)], size_t(ra));
+        if (!bits::test(full[size_t(ra)], size_t(rb)) || !bits::test(full[size_t(rb)], size_t(ra))) {
+            if (++missing < 10)
+                ADD_FAILURE() << "sight line (" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ") between regions "
+                              << ra << " and " << rb << " is not in the Full PVS";
+        }
+    }
+    EXPECT_EQ(missing, 0u);
+    EXPECT_GT(clear, 2000u);
+    const size_t seen_bits = [&] {
+        size_t n = 0;
+        for (const auto& row : seen)
+            n += bits::count(row);
+        return n;
+    }();
+    std::printf("[ grid    ] %u regions, %zu portals: %zu clear sight lines, %zu region pairs seen by them; "
+                "Full mean %.1f (%zu bits beyond the sampled pairs), Fast mean %.1f; Full %.3f s\n",
+                g.regions, g.portals.portals.size(), clear, seen_bits, full_report.mean_visible,
+                bits_not_in(full, seen), fast_report.mean_visible, full_report.seconds);
+
+    // Deterministic: the same rows whatever the thread count (3 threads on 2 cores: waits).
+    for (unsigned threads : {1u, 3u})
+        EXPECT_EQ(rows_of(bake(g.portals, g.regions, Method::Full, threads)), full) << threads << " threads";
+    // Lower test levels only loosen the PVS.
+    Rows looser = full;
+    for (int level = 3; level >= 0; --level) {
+        const Rows r = rows_of(bake(g.portals, g.regions, Method::Full, 2, nullptr, level));
+        EXPECT_EQ(bits_not_in(looser, r), 0u) << "level " << level << " lost bits of level " << level + 1;
+        EXPECT_EQ(bits_not_in(r, fast), 0u) << "level " << level;
+        looser = r;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3. Quake maps
+
+// A Quake map's portals (SkyPortals::None) baked Fast and Full with 2 threads, once per test binary.
+struct QuakeBake {
+    uint32_t regions = 0;
+    PortalSet portals;
+    Rows fast, full, file;
+    VisReport fast_report, full_report;
+};
+
+const QuakeBake* quake_bake(const std::string& map)
+{
+    static std::map<std::string, std::unique_ptr<QuakeBake>> cache;
+    auto& slot = cache[map];
+    if (!slot) {
+        const Zone* zone = test::shared_zone(map);
+        if (zone == nullptr || !zone->baked_pvs)
+            return nullptr;
+        slot = std::make_unique<QuakeBake>();
+        slot->regions = uint32_t(zone->region_count());
+        PortalOptions options;
+        options.sky = SkyPortals::None;
+        slot->portals = build_zone_portals(*zone, options);
+        slot->fast = rows_of(bake(slot->portals, slot->regions, Method::Fast, 2, &slot->fast_report));
+        slot->full = rows_of(bake(slot->portals, slot->regions, Method::Full, 2, &slot->full_report));
+        slot->file = rows_of(*zone->baked_pvs);
+    }
+    return slot.get();
+}
+
+class PortalVisQuake : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PortalVisQuake, FastAndFullAgainstTheFilesPvs)
+{
+    SHARED_DATA_OR_SKIP(path, GetParam());
+    const QuakeBake* b = quake_bake(GetParam());
+    ASSERT_NE(b, nullptr);
+    const uint32_t n = b->regions;
+    EXPECT_EQ(b->full_report.portals, b->portals.portals.size());
+    EXPECT_EQ(b->full_report.portals_skipped, 0u);
+    EXPECT_FALSE(b->full_report.cancelled);
+
+    for (uint32_t r = 0; r < n; ++r) {
+        ASSERT_TRUE(bits::test(b->full[r], r)) << "row " << r << " lacks its own region";
+        ASSERT_TRUE(bits::test(b->fast[r], r)) << "row " << r;
+    }
+    EXPECT_EQ(bits_not_in(b->full, b->fast), 0u) << "Full must lie within Fast";
+
+    const size_t only_ours = bits_not_in(b->full, b->file), only_file = bits_not_in(b->file, b->full);
+    const size_t fast_only_file = bits_not_in(b->file, b->fast);
+    const double ours = mean_bits(b->full), theirs = mean_bits(b->file);
+    EXPECT_NEAR(b->full_report.mean_visible, ours, 1e-9);
+    EXPECT_NEAR(b->fast_report.mean_visible, mean_bits(b->fast), 1e-9);
+    EXPECT_LE(ours, 1.10 * theirs);
+    // Base vis is a superset of what any portal flow finds: WVis's rows lie within ours.
+    EXPECT_EQ(fast_only_file, 0u);
+    std::printf("[ %-7s ] %u regions, %zu portals. File mean %.1f. Fast: mean %.1f, %.3f s, %zu bits only the file's. "
+                "Full (level 4, %u threads): mean %.1f (%.1f%% of the file's), %.3f s (base %.3f s, waits %.3f s), "
+                "%zu bits only ours, %zu only the file's; peak ~%.1f MB\n",
+                test::param_name(GetParam()).c_str(), n, b->portals.portals.size(), theirs, b->fast_report.mean_visible,
+                b->fast_report.seconds, fast_only_file, b->full_report.threads, ours, 100.0 * ours / theirs,
+                b->full_report.seconds, b->full_report.base_seconds, b->full_report.wait_seconds, only_ours, only_file,
+                double(b->full_report.peak_bytes_estimate) / (1024.0 * 1024.0));
+}
+
+INSTANTIATE_TEST_SUITE_P(Maps, PortalVisQuake,
+                         ::testing::Values(std::string("quake/e1m1.bsp"), std::string("quake/e1m2.bsp"),
+                                           std::string("quake/start.bsp")),
+                         [](const ::testing::TestParamInfo<std::string>& param) { return test::param_name(param.param); });
+
+// ---------------------------------------------------------------------------------------------
+// 4. Determinism, degenerate input, progress and cancellation
+
+// e1m1 in optimised builds; end (337 regions) under the sanitizers, where e1m1's one-thread bake
+// alone would take about 20 s.
+TEST(PortalVis, FullIsTheSameForOneAndTwoThreadsOnARealMap)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    const std::string map = "quake/end.bsp";
+#else
+    const std::string map = "quake/e1m1.bsp";
+#endif
+    SHARED_DATA_OR_SKIP(path, map);
+    const QuakeBake* b = quake_bake(map);
+    ASSERT_NE(b, nullptr);
+    VisReport one_report;
+    const Rows one = rows_of(bake(b->portals, b->regions, Method::Full, 1, &one_report));
+    EXPECT_EQ(one_report.threads, 1u);
+    EXPECT_EQ(b->full_report.threads, 2u);
+    EXPECT_EQ(one_report.wait_seconds, 0.0);
+    size_t differing = 0;
+    for (uint32_t r = 0; r < b->regions; ++r)
+        differing += one[r] != b->full[r];
+    EXPECT_EQ(differing, 0u) << "rows differ between 1 and 2 threads";
+    std::printf("[ %-7s ] Full: 1 thread %.3f s, 2 threads %.3f s (waits %.3f s); mean %.1f\n",
+                test::param_name(map).c_str(), one_report.seconds, b->full_report.seconds, b->full_report.wait_seconds,
+                one_report.mean_visible);
+}
+
+void expect_only_self(const Pvs& pvs, uint32_t n)
+{
+    ASSERT_EQ(pvs.region_count(), n);
+    const Rows rows = rows_of(pvs);
+    for (uint32_t r = 0; r < n; ++r)
+        EXPECT_EQ(list(members(rows[r])), list({r})) << "region " << r;
+}
+
+TEST(PortalVis, NoPortalsEveryRegionSeesOnlyItself)
+{
+    for (Method m : {Method::Fast, Method::Full}) {
+        VisReport report;
+        expect_only_self(bake(PortalSet{}, 5, m, 2, &report), 5);
+        EXPECT_EQ(report.portals, 0u);
+        EXPECT_DOUBLE_EQ(report.mean_visible, 1.0);
+        expect_only_self(bake(PortalSet{}, 1, m), 1); // a single region
+        const Pvs none = bake(PortalSet{}, 0, m);     // no region at all
+        EXPECT_EQ(none.region_count(), 0u);
+    }
+}
+
+TEST(PortalVis, UnusablePortalsAreSkipped)
+{
+    PortalSet set;
+    const std::vector<glm::vec3> square = {{0, 0, 0}, {0, 64, 0}, {0, 64, 64}, {0, 0, 64}};
+    add_portal(set, 0, 0, square, {1, 0, 0});                                   // one region on both sides
+    add_portal(set, 0, 7, square, {1, 0, 0});                                   // region out of range
+    add_portal(set, -1, 1, square, {1, 0, 0});                                  // negative region
+    add_portal(set, 0, 1, {{0, 0, 0}, {0, 32, 0}, {0, 64, 0}}, {1, 0, 0});      // colinear: no area
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    add_portal(set, 0, 1, {{0, 0, 0}, {0, 64, nan}, {0, 64, 64}}, {1, 0, 0});   // not finite
+    Portal bad_range;
+    bad_range.regions[0] = 0;
+    bad_range.regions[1] = 1;
+    bad_range.first_point = 1000;
+    bad_range.point_count = 4;
+    set.portals.push_back(bad_range);                                           // points outside the set
+    for (Method m : {Method::Fast, Method::Full}) {
+        VisReport report;
+        expect_only_self(bake(set, 2, m, 2, &report), 2);
+        EXPECT_EQ(report.portals, 0u);
+        EXPECT_EQ(report.portals_skipped, set.portals.size());
+    }
+}
+
+// Portals that are tiny, thin slabs, coplanar fans and near-coplanar pairs: defined rows, each
+// holding its region and its portal neighbours, Full within Fast, no hang.
+TEST(PortalVis, TinyAndNearCoplanarPortalsGiveDefinedRows)
+{
+    PortalSet set;
+    // 0 | 1: a tiny portal, 0.01 units across.
+    add_portal(set, 1, 0, {{0, 0, 0}, {0, 0.01f, 0}, {0, 0.01f, 0.01f}, {0, 0, 0.01f}}, {1, 0, 0});
+    // 1 | 2 and 2 | 3: two portals 0.05 apart (within ON_EPSILON), slightly tilted: region 2 is
+    // a slab thinner than the epsilon.
+    add_portal(set, 2, 1, {{10, -32, -32}, {10, 32, -32}, {10, 32, 32}, {10, -32, 32}}, {1, 0, 0});
+    add_portal(set, 3, 2, {{10.05f, -32, -32}, {10.05f, 32, -32}, {10.06f, 32, 32}, {10.06f, -32, 32}}, {1, 0, 0});
+    // 3 | 4..7: a coplanar fan, four quadrants of the plane x = 20. Regions 4..7 lie beyond it
+    // and are joined only through 3, so they cannot see each other (a line cannot cross x = 20
+    // twice), and the coplanar rules (base vis test 3, the coplanar exit) must say so.
+    const float q[4][2] = {{-32, -32}, {0, -32}, {-32, 0}, {0, 0}};
+    for (int k = 0; k < 4; ++k) {
+        const float y = q[k][0], z = q[k][1];
+        add_portal(set, 4 + k, 3, {{20, y, z}, {20, y + 32, z}, {20, y + 32, z + 32}, {20, y, z + 32}}, {1, 0, 0});
+    }
+    const uint32_t n = 8;
+    const Rows fast = rows_of(bake(set, n, Method::Fast));
+    for (unsigned threads : {1u, 2u}) {
+        VisReport report;
+        const Rows full = rows_of(bake(set, n, Method::Full, threads, &report));
+        EXPECT_EQ(report.portals, set.portals.size());
+        EXPECT_EQ(bits_not_in(full, fast), 0u);
+        for (const Portal& p : set.portals) {
+            const auto a = uint32_t(p.regions[0]), b = uint32_t(p.regions[1]);
+            EXPECT_TRUE(bits::test(full[a], b) && bits::test(full[b], a)) << a << " | " << b;
+        }
+        for (uint32_t r = 0; r < n; ++r)
+            EXPECT_TRUE(bits::test(full[r], r));
+        for (uint32_t a = 4; a < 8; ++a)
+            for (uint32_t b = 4; b < 8; ++b) {
+                EXPECT_EQ(bits::test(full[a], b), a == b) << a << " -> " << b;
+                EXPECT_EQ(bits::test(fast[a], b), a == b) << a << " -> " << b << " (Fast)";
+            }
+        // The fan's far side sees back through 3 and the slab: 4 sees 3, 2, 1 (straight lines
+        // along x through both near-coplanar portals).
+        EXPECT_TRUE(bits::test(full[4], 2) && bits::test(full[4], 1)) << list(members(full[4]));
+    }
+}
+
+TEST(PortalVis, ProgressRunsFromZeroToOne)
+{
+    const Grid g = make_grid(10, 10, 0.2, 3);
+    std::vector<double> seen;
+    VisParams params;
+    params.method = Method::Full;
+    params.threads = 2;
+    params.progress = [&](double f) {
+        seen.push_back(f);
+        return true;
+    };
+    VisReport report;
+    const Rows with_progress = rows_of(bake_portal_vis(g.portals, g.regions, params, &report));
+    EXPECT_FALSE(report.cancelled);
+    ASSERT_GE(seen.size(), 2u);
+    EXPECT_EQ(seen.front(), 0.0);
+    EXPECT_EQ(seen.back(), 1.0);
+    for (size_t i = 1; i < seen.size(); ++i) {
+        EXPECT_GE(seen[i], seen[i - 1]);
+        EXPECT_LE(seen[i], 1.0);
+    }
+    EXPECT_EQ(with_progress, rows_of(bake(g.portals, g.regions, Method::Full, 1)));
+}
+
+TEST(PortalVis, CancelBeforeAnyWorkGivesEveryRegionVisible)
+{
+    const Grid g = make_grid(6, 6, 0.2, 5);
+    VisParams params;
+    params.threads = 2;
+    int calls = 0;
+    params.progress = [&](double) {
+        ++calls;
+        return false;
+    };
+    VisReport report;
+    const Pvs pvs = bake_portal_vis(g.portals, g.regions, params, &report);
+    EXPECT_TRUE(report.cancelled);
+    EXPECT_EQ(calls, 1);
+    EXPECT_DOUBLE_EQ(report.mean_visible, double(g.regions));
+    ASSERT_EQ(pvs.region_count(), g.regions);
+    EXPECT_TRUE(pvs.visible(0, g.regions - 1));
+}
+
+// Cancelling in the middle of the flow stops it and leaves a conservative PVS: within Fast and
+// holding Full.
+TEST(PortalVis, CancelDuringTheFlowStopsAndStaysConservative)
+{
+    const std::string map = "quake/end.bsp"; // its Full bake takes about a second: dozens of progress calls
+    SHARED_DATA_OR_SKIP(path, map);
+    const QuakeBake* b = quake_bake(map);
+    ASSERT_NE(b, nullptr);
+
+    VisParams params;
+    params.threads = 2;
+    std::atomic<int> calls{0};
+    params.progress = [&](double fraction) {
+        ++calls;
+        return fraction < 0.1; // base vis is the first 10 %: cancel once the flow is under way
+    };
+    VisReport report;
+    const Rows cancelled = rows_of(bake_portal_vis(b->portals, b->regions, params, &report));
+    ASSERT_TRUE(report.cancelled) << "the bake ended before the first progress call (" << calls << " calls)";
+    EXPECT_EQ(bits_not_in(cancelled, b->fast), 0u);
+    EXPECT_EQ(bits_not_in(b->full, cancelled), 0u);
+    std::printf("[ cancel  ] end Full cancelled after %.3f s (%d progress calls; the whole bake: %.3f s); the rows' "
+                "mean %.1f between Full's %.1f and Fast's %.1f\n",
+                report.seconds, calls.load(), b->full_report.seconds, report.mean_visible, b->full_report.mean_visible,
+                b->fast_report.mean_visible);
+}
+
+} // namespace
+} // namespace pvs

@@ -1,0 +1,115 @@
+// The portal-vis baker: a PVS from a zone's portals, as Quake's vis does it
+// (../shared/formats/quake-doom-hepvs.md §2.5, §3.1-§3.5, §3.7-§3.8; ericw-tools vis as of 2023).
+//
+// Input. A PortalSet whose portals follow PRT1's orientation (build_portals and quake::parse_prt
+// both give it): the plane of a portal's first three points, n = normalize((p0-p1) x (p2-p1)),
+// points into regions[0]. Each portal becomes two directed portals (§2.5, §3.1): 2i, stored in
+// regions[0], leads into regions[1] with the negated plane and the points as given; 2i+1,
+// stored in regions[1], leads into regions[0] with the plane as computed and the points
+// reversed. Every directed plane's normal points into the region the portal leads to. Portals
+// that cannot be used are skipped and counted (VisReport::portals_skipped): a region out of
+// [0, region_count), the same region on both sides, fewer than three points, or no area (when
+// the first three points are colinear the plane comes from all points, Newell's method).
+//
+// Method::Fast, base portal vis (§3.2). For each directed portal p, the portals it might see
+// through its destination pass ericw's tests: the target is not behind p (a vertex beyond
+// +ON_EPSILON, or all vertices within ON_EPSILON: coplanar), p is not entirely in front of the
+// target (a vertex of p below -ON_EPSILON, or coplanar), and a coplanar pair facing each other
+// (dot of normals < -0.99) is rejected; bounding spheres reject first. p.mightsee is the flood
+// from p's destination through the portals that pass. The tests are evaluated lazily, only for
+// the portals the flood meets (the same result as testing every pair, at a fraction of the
+// cost). Fast uses mightsee as the final visbits: a loose, over-inclusive PVS.
+//
+// Method::Full, portal flow (§3.3, §3.4). For each directed portal, a depth-first walk through
+// the portal chain from its destination, clipping as ericw's RecursiveLeafFlow does: the
+// mightsee prune, the "nothing new" prune, the coplanar-exit prune (normals equal within 0.001
+// per component), the target clipped by the source's and the pass's planes, the source clipped
+// behind the target, then the separating planes of test levels 0-4 (ClipToSeparators: for each
+// edge of A the first vertex of B giving a plane with all of B in front, none of B below
+// -ON_EPSILON, degenerate when |cross|^2 < 0.1; tests 1 and 3 mirrored). Clips keep "on"
+// points, return an all-on winding unclipped, and give up (keep the input, conservative) when
+// a result would exceed 24 points. The planes of tests 0 and 1 depend only on the previous
+// frame, so they are cached per frame and re-applied to every target; they are found edge by
+// edge as targets need them, and every target meets all of them in the same order (ericw
+// caches only the ones found while clipping its first target, a partial set when that target
+// was clipped away).
+// A leaf already on the chain is not entered again (counted in VisReport::leaf_recursions).
+//
+// Aggregation (§3.5): a region sees the union of its outgoing directed portals' visbits, plus
+// itself (VisReport::saw_into_own_region counts regions that already saw themselves, ericw's
+// "portals saw into leaf" warning).
+//
+// Determinism. The result depends on nothing but the input and VisParams::method/level: not on
+// the thread count, not on timing. Base vis is per-portal independent. In the flow, ericw lets
+// a portal prune with the finished visbits of other portals (the "nothing new" test and the
+// narrowed mightsee of the next frame use q.visbits when q is done, else q.mightsee); that is a
+// big speed-up, but which portals happen to be done depends on timing, and the flow's
+// approximations (24-point give-up, first separator per edge, epsilons) make the result depend
+// on it slightly. Here the portals are ranked once by increasing nummightsee (ties by index),
+// handed to the threads in rank order, and portal p prunes with q.visbits exactly when
+// rank(q) + kPruneLag < rank(p), otherwise with q.mightsee. If such a q is still being worked
+// on when p needs it, p's thread waits for it (q was handed out earlier, and q itself only
+// waits for lower ranks, so this cannot deadlock). With one thread nothing ever waits and the
+// result is a fixed function of the ranking; with more threads it is the same function. The
+// lag leaves the last few portals handed out unused as pruning sets so that threads seldom
+// wait for each other (measured in docs/architecture.md, "Portal vis").
+//
+// Threads, progress, cancellation. VisParams::threads workers (0 = hardware concurrency) take
+// portals from a shared counter (one thread and no progress callback: the calling thread does
+// the work itself); otherwise the calling thread only watches: it calls
+// VisParams::progress(fraction) once before any work (fraction 0), then about every 50 ms, and
+// once with 1.0 at the end, always on the calling thread. Returning false cancels: the workers
+// stop within a few thousand flow steps, and the returned PVS is conservative: rows from
+// finished portals' visbits and unfinished portals' mightsee (a superset of the full result,
+// a subset of the fast one), or every region visible when base vis had not finished.
+// VisReport::cancelled says so. An exception thrown by the callback stops the workers and is
+// rethrown.
+//
+// Memory. Two bit rows of region_count bits per directed portal (mightsee, visbits; 64-bit
+// words), the portals' points in double, and per thread a stack of frames, grown only when a
+// walk goes deeper than before (a frame holds three fixed 24-point windings and the cached
+// separators, ericw's pstack_t): no allocation inside the walk otherwise.
+#pragma once
+
+#include "visibility/pvs.h"
+#include "visibility/zone.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+namespace pvs {
+
+struct VisParams {
+    enum class Method : uint8_t { Fast, Full };
+    Method method = Method::Full;
+    int level = 4;        // Full: separator test level 0..4 (clamped), ericw's default 4
+    unsigned threads = 0; // 0 = std::thread::hardware_concurrency()
+    // Called on the calling thread with the fraction done in [0, 1]; return false to cancel.
+    std::function<bool(double fraction)> progress;
+};
+
+struct VisReport {
+    double seconds = 0.0;          // the whole bake, wall clock
+    double base_seconds = 0.0;     // of which base vis (mightsee)
+    size_t portals = 0;            // input portals used (each gives two directed portals)
+    size_t portals_skipped = 0;    // input portals that could not be used (see above)
+    double mean_visible = 0.0;     // mean set bits per row of the result
+    bool cancelled = false;
+    size_t peak_bytes_estimate = 0; // the bake's largest heap use, estimated from its arrays
+    unsigned threads = 0;          // worker threads used
+    size_t saw_into_own_region = 0; // regions whose portals' visbits held the region itself
+    size_t leaf_recursions = 0;    // Full: walks that met a region already on their chain
+    double wait_seconds = 0.0;     // Full: time worker threads spent waiting for an older portal
+};
+
+// Portals older than this many ranks are used for pruning (see Determinism above). Part of the
+// definition of the result: changing it may change the PVS slightly.
+inline constexpr uint32_t kPruneLag = 32;
+
+// The PVS of `region_count` regions from `portals` (regions[] are region ids). Regions with
+// no portal see only themselves. `report`, when given, is overwritten.
+Pvs bake_portal_vis(const PortalSet& portals, uint32_t region_count, const VisParams& params,
+                    VisReport* report = nullptr);
+
+} // namespace pvs
