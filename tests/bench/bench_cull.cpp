@@ -64,6 +64,8 @@ const std::vector<Camera>& walk()
     return cameras;
 }
 
+// Argument 0: CullOptions::time_stages (1 = the per-stage clock reads tools use, 0 = an
+// engine's frame loop without them).
 void BM_Cull_PvsFrustum(benchmark::State& state)
 {
     if (!e1m1()) {
@@ -76,12 +78,13 @@ void BM_Cull_PvsFrustum(benchmark::State& state)
     size_t i = 0;
     uint64_t drawn = 0;
     for (auto _ : state) {
-        drawn += culler.cull(cameras[i++ & 4095], {CullMode::PvsFrustum, false}, visible).regions_after_frustum;
+        drawn += culler.cull(cameras[i++ & 4095], {CullMode::PvsFrustum, false, state.range(0) != 0}, visible)
+                     .regions_after_frustum;
         benchmark::DoNotOptimize(visible.data());
     }
     state.counters["regions_drawn"] = double(drawn) / double(state.iterations());
 }
-BENCHMARK(BM_Cull_PvsFrustum);
+BENCHMARK(BM_Cull_PvsFrustum)->ArgName("time_stages")->Arg(1)->Arg(0);
 
 // The distribution over the walk: each frame timed on its own (steady_clock, ~20 ns of overhead
 // included), 10 passes over the 4096 frames; the counters are the median and the 99th percentile.
@@ -100,7 +103,7 @@ void BM_Cull_PvsFrustum_PerFrameDistribution(benchmark::State& state)
         for (int pass = 0; pass < 10; ++pass)
             for (const Camera& camera : cameras) {
                 const auto start = std::chrono::steady_clock::now();
-                culler.cull(camera, {CullMode::PvsFrustum, false}, visible);
+                culler.cull(camera, {CullMode::PvsFrustum, false, state.range(0) != 0}, visible);
                 ns.push_back(std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count());
             }
     }
@@ -109,7 +112,12 @@ void BM_Cull_PvsFrustum_PerFrameDistribution(benchmark::State& state)
     state.counters["p99_us"] = ns[ns.size() * 99 / 100] / 1000.0;
     state.counters["max_us"] = ns.back() / 1000.0;
 }
-BENCHMARK(BM_Cull_PvsFrustum_PerFrameDistribution)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Cull_PvsFrustum_PerFrameDistribution)
+    ->ArgName("time_stages")
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 void BM_Cull_Baseline_LinearScanVectorBool(benchmark::State& state)
 {

@@ -1,0 +1,82 @@
+#include "visibility/math/frustum_boxes.h"
+
+#include <algorithm>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace pvs {
+
+FrustumBoxes::FrustumBoxes(std::span<const Aabb> boxes) : boxes_(boxes.size())
+{
+    for (size_t i = 0; i < boxes.size(); ++i) {
+        const Aabb& b = boxes[i];
+        boxes_[i] = {{b.min.x, b.min.y, b.min.z, 0.0f}, {b.max.x, b.max.y, b.max.z, 0.0f}};
+    }
+}
+
+FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes planes)
+{
+    PlaneGroups g;
+    const int plane_count = planes == Planes::All ? 6 : 4;
+    g.group_count = planes == Planes::All ? 2 : 1;
+    for (int lane = 0; lane < 8; ++lane) {
+        const int group = lane / 4, k = lane % 4;
+        // A lane without a plane: n = 0 and dist = -1, so every distance is +1 (in front).
+        const Plane p = lane < plane_count ? frustum.planes[size_t(lane)] : Plane{{0.0f, 0.0f, 0.0f}, -1.0f};
+        g.pos_x[group][k] = std::max(p.normal.x, 0.0f);
+        g.pos_y[group][k] = std::max(p.normal.y, 0.0f);
+        g.pos_z[group][k] = std::max(p.normal.z, 0.0f);
+        g.neg_x[group][k] = std::min(p.normal.x, 0.0f);
+        g.neg_y[group][k] = std::min(p.normal.y, 0.0f);
+        g.neg_z[group][k] = std::min(p.normal.z, 0.0f);
+        g.dist[group][k] = p.dist;
+    }
+    return g;
+}
+
+#if defined(__SSE2__)
+
+bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
+{
+    const PackedBox& b = boxes_[box];
+    const __m128 lo = _mm_load_ps(b.min), hi = _mm_load_ps(b.max);
+    const __m128 lo_x = _mm_shuffle_ps(lo, lo, 0x00), lo_y = _mm_shuffle_ps(lo, lo, 0x55), lo_z = _mm_shuffle_ps(lo, lo, 0xAA);
+    const __m128 hi_x = _mm_shuffle_ps(hi, hi, 0x00), hi_y = _mm_shuffle_ps(hi, hi, 0x55), hi_z = _mm_shuffle_ps(hi, hi, 0xAA);
+    __m128 outside = _mm_setzero_ps();
+    for (int g = 0; g < planes.group_count; ++g) {
+        // The same summation order as glm::dot(normal, positive) - dist: x, then y, then z;
+        // each axis adds its two products, one of which is an exact zero.
+        __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_load_ps(planes.pos_x[g])), _mm_mul_ps(lo_x, _mm_load_ps(planes.neg_x[g])));
+        d = _mm_add_ps(d, _mm_mul_ps(hi_y, _mm_load_ps(planes.pos_y[g])));
+        d = _mm_add_ps(d, _mm_mul_ps(lo_y, _mm_load_ps(planes.neg_y[g])));
+        d = _mm_add_ps(d, _mm_mul_ps(hi_z, _mm_load_ps(planes.pos_z[g])));
+        d = _mm_add_ps(d, _mm_mul_ps(lo_z, _mm_load_ps(planes.neg_z[g])));
+        d = _mm_sub_ps(d, _mm_load_ps(planes.dist[g]));
+        outside = _mm_or_ps(outside, _mm_cmplt_ps(d, _mm_setzero_ps()));
+    }
+    return _mm_movemask_ps(outside) == 0;
+}
+
+#else
+
+bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
+{
+    const PackedBox& b = boxes_[box];
+    bool outside = false;
+    for (int g = 0; g < planes.group_count; ++g)
+        for (int k = 0; k < 4; ++k) {
+            float d = (b.max[0] * planes.pos_x[g][k] + b.min[0] * planes.neg_x[g][k]);
+            d += b.max[1] * planes.pos_y[g][k];
+            d += b.min[1] * planes.neg_y[g][k];
+            d += b.max[2] * planes.pos_z[g][k];
+            d += b.min[2] * planes.neg_z[g][k];
+            outside |= d - planes.dist[g][k] < 0.0f;
+        }
+    return !outside;
+}
+
+#endif
+
+} // namespace pvs

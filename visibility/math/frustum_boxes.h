@@ -1,0 +1,58 @@
+// Many boxes against one frustum, fast: the culler's frustum stage.
+//
+// Frustum::intersects picks each plane's "positive vertex" with a branch per axis and leaves
+// at the first plane that rejects, so a frame of a few hundred boxes pays for unpredictable
+// branches on every box. Here the planes are prepared once per frame, four to a group and
+// split into their positive and negative normal parts (n+ = max(n, 0), n- = min(n, 0)), so the
+// positive vertex's distance is a branch-free sum, max·n+ + min·n- - dist, over four planes at
+// once (SSE2, part of every x86-64; a scalar loop elsewhere). The products with the zero part
+// are exact zeros, so every distance is bit for bit the one Frustum::intersects computes, and
+// the answers are identical to it (tests/visibility/test_frustum_boxes.cpp checks that on
+// random boxes and frustums, touching boxes included).
+//
+// The boxes are copied into 32-byte aligned records (min.xyz, pad, max.xyz, pad) at
+// construction; the culler keeps one FrustumBoxes per zone, built from the regions' bounds.
+#pragma once
+
+#include "visibility/math/aabb.h"
+#include "visibility/math/frustum.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace pvs {
+
+class FrustumBoxes {
+public:
+    // Which planes to test: all six, or the four side planes (Frustum::intersects_sides).
+    enum class Planes : uint8_t { All, SidesOnly };
+
+    // Planes prepared for the branch-free test: up to two groups of four. Unused lanes hold a
+    // plane every point is in front of.
+    struct alignas(16) PlaneGroups {
+        float pos_x[2][4], pos_y[2][4], pos_z[2][4]; // n+ per lane
+        float neg_x[2][4], neg_y[2][4], neg_z[2][4]; // n- per lane
+        float dist[2][4];
+        int group_count = 1;
+    };
+
+    explicit FrustumBoxes(std::span<const Aabb> boxes);
+
+    static PlaneGroups prepare(const Frustum& frustum, Planes planes);
+
+    // Same answer as frustum.intersects(box i) (or intersects_sides) for the prepared planes.
+    bool intersects(uint32_t box, const PlaneGroups& planes) const;
+
+    size_t size() const { return boxes_.size(); }
+    size_t memory_bytes() const { return boxes_.capacity() * sizeof(PackedBox); }
+
+private:
+    struct alignas(32) PackedBox {
+        float min[4];
+        float max[4];
+    };
+    std::vector<PackedBox> boxes_;
+};
+
+} // namespace pvs
