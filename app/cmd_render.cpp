@@ -1,6 +1,7 @@
 #include "app/cmd_render.h"
 
 #include "app/arguments.h"
+#include "app/pvs_source.h"
 
 #include "ui/software_renderer.h"
 #include "visibility/culler.h"
@@ -29,6 +30,7 @@ struct RenderOptions {
     std::string size = "800x600";
     std::string mode = "textured";
     std::string cull = "pvs+frustum";
+    std::string pvs = "baked";
     std::string output;
 };
 
@@ -62,7 +64,10 @@ int run_render(const RenderOptions& options)
         const std::optional<Camera> cull_camera =
             locked ? std::optional<Camera>(make_camera(*cull_camera_values)) : std::nullopt;
 
-        Culler culler(zone, zone.baked_pvs ? &*zone.baked_pvs : nullptr);
+        const PvsSource source = make_pvs_source(zone, options.pvs);
+        if (options.pvs != "baked" || !source.pvs)
+            std::fprintf(stderr, "pvscope: PVS %s\n", source.note.c_str());
+        Culler culler(zone, source.pvs);
         ui::SoftwareRenderer renderer((*size)[0], (*size)[1]);
         const ui::CulledFrame frame =
             ui::render_culled(renderer, culler, camera, cull_camera, {*cull_mode, true}, *mode);
@@ -103,7 +108,7 @@ void register_render_command(CLI::App& app, int& exit_code)
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand(
         "render", "Draw the regions the culler keeps, headless (Irrlicht's software renderer), into a PNG");
-    cmd->add_option("file", options->path, "Zone file (Quake .bsp)")->required();
+    cmd->add_option("file", options->path, "Zone file (.bsp, .s3d)")->required();
     cmd->add_option("--camera", options->camera, "Camera position and direction, zone units and degrees (z up; "
                                                   "yaw 0 = +x, 90 = +y; pitch up from the horizontal)")
         ->required()
@@ -149,6 +154,11 @@ void register_render_command(CLI::App& app, int& exit_code)
     cmd->add_option("--cull", options->cull, "Which culling stages run before drawing")
         ->capture_default_str()
         ->check(CLI::IsMember({"none", "frustum", "pvs", "pvs+frustum"}));
+    cmd->add_option("--pvs", options->pvs,
+                    "PVS source: baked (the file's), none, or portal-fast / portal-full (baked now from portals "
+                    "built from the zone's tree)")
+        ->check(CLI::IsMember(pvs_source_names()))
+        ->capture_default_str();
     cmd->add_option("-o,--output", options->output, "PNG file to write")->required();
     cmd->callback([options, &exit_code] { exit_code = run_render(*options); });
 }

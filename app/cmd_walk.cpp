@@ -1,6 +1,7 @@
 #include "app/cmd_walk.h"
 
 #include "app/arguments.h"
+#include "app/pvs_source.h"
 #include "ui/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/file_error.h"
@@ -157,13 +158,9 @@ int run_walk(const WalkCommandOptions& o)
     }
     try {
         const Zone zone = load_zone(o.path);
-        const Pvs* pvs = nullptr;
-        if (o.pvs == "baked") {
-            if (!zone.baked_pvs)
-                std::fprintf(stderr, "pvscope: note: %s has no baked PVS; culling with the frustum only\n",
-                             o.path.c_str());
-            pvs = zone.baked_pvs ? &*zone.baked_pvs : nullptr;
-        }
+        const PvsSource source = make_pvs_source(zone, o.pvs);
+        std::fprintf(stderr, "pvscope: PVS %s\n", source.note.c_str());
+        const Pvs* pvs = source.pvs;
         Camera lens;
         lens.fov_y_degrees = o.fov;
         lens.aspect = float((*size)[0]) / float((*size)[1]);
@@ -218,8 +215,10 @@ void register_walk_command(CLI::App& app, int& exit_code)
                     "'regions' for one camera in every region a player can stand in, or a file of "
                     "x,y,z,yaw,pitch lines (replaces --cameras)");
     cmd->add_option("--cull", o->cull, "none | frustum | pvs | pvs+frustum")->capture_default_str();
-    cmd->add_option("--pvs", o->pvs, "PVS source: baked (the file's) or none")
-        ->check(CLI::IsMember({"baked", "none"}))
+    cmd->add_option("--pvs", o->pvs,
+                    "PVS source: baked (the file's), none, or portal-fast / portal-full (baked now from "
+                    "portals built from the zone's tree)")
+        ->check(CLI::IsMember(pvs_source_names()))
         ->capture_default_str();
     cmd->add_option("--size", o->size, "ID-buffer size WIDTHxHEIGHT")->capture_default_str();
     cmd->add_option("--fov", o->fov, "Vertical field of view in degrees")->capture_default_str();
