@@ -52,7 +52,7 @@ TEST_P(BakedPvsWalk, PortalFullNeverPopsOver2000Cameras)
 }
 
 INSTANTIATE_TEST_SUITE_P(QuakeMaps, BakedPvsWalk, testing::Values("e1m1", "e1m2", "e2m1", "start", "end", "dm2"),
-                         [](const testing::TestParamInfo<const char*>& info) { return std::string(info.param); });
+                         [](const testing::TestParamInfo<const char*>& map) { return std::string(map.param); });
 
 } // namespace
 } // namespace pvs::ui
