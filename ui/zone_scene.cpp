@@ -48,12 +48,12 @@ template <typename Blend>
 irr::video::ITexture* make_texture(irr::video::IVideoDriver& driver, const Material& material, const std::string& name,
                                    Blend blend)
 {
-    if (material.width == 0 || material.height == 0 ||
-        material.rgba.size() != size_t(material.width) * material.height * 4)
+    const std::vector<uint8_t> rgba = material_rgba(material);
+    if (material.width == 0 || material.height == 0 || rgba.size() != size_t(material.width) * material.height * 4)
         return nullptr;
     std::vector<uint32_t> argb(size_t(material.width) * material.height);
     for (size_t p = 0; p < argb.size(); ++p) {
-        const uint8_t* px = &material.rgba[4 * p];
+        const uint8_t* px = &rgba[4 * p];
         argb[p] = uint32_t(px[3]) << 24 | blend(uint32_t(px[0]) << 16 | uint32_t(px[1]) << 8 | px[2]);
     }
     irr::video::IImage* image = driver.createImageFromData(

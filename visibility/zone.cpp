@@ -1,5 +1,7 @@
 #include "visibility/zone.h"
 
+#include <stdexcept>
+
 namespace pvs {
 
 const char* region_flag_name(uint32_t flag)
@@ -15,6 +17,23 @@ const char* region_flag_name(uint32_t flag)
     case kRegionSky: return "sky";
     default: return "?";
     }
+}
+
+void set_material_rgba(Material& material, uint32_t width, uint32_t height, std::span<const uint8_t> rgba)
+{
+    if (!rgba.empty() && rgba.size() != uint64_t{width} * height * 4)
+        throw std::invalid_argument("material '" + material.name + "': " + std::to_string(rgba.size()) +
+                                    " bytes of RGBA for " + std::to_string(width) + "x" + std::to_string(height));
+    material.width = width;
+    material.height = height;
+    material.pixels.assign_rgba(rgba);
+}
+
+std::vector<uint8_t> material_rgba(const Material& material)
+{
+    std::vector<uint8_t> rgba;
+    material.pixels.decode_rgba(rgba);
+    return rgba;
 }
 
 Aabb Zone::bounds() const
@@ -44,7 +63,7 @@ size_t Zone::memory_bytes() const
     total += heap_bytes(mesh.positions) + heap_bytes(mesh.uvs) + heap_bytes(mesh.indices) + heap_bytes(mesh.faces);
     total += heap_bytes(materials);
     for (const Material& m : materials)
-        total += heap_bytes(m.name) + heap_bytes(m.rgba);
+        total += heap_bytes(m.name) + m.pixels.memory_bytes();
     total += heap_bytes(region_face_offsets) + heap_bytes(region_faces);
     total += heap_bytes(zone_lines);
     for (const ZoneLine& z : zone_lines)
@@ -68,7 +87,7 @@ void Zone::shrink_to_fit()
     mesh.faces.shrink_to_fit();
     materials.shrink_to_fit();
     for (Material& m : materials)
-        m.rgba.shrink_to_fit();
+        m.pixels.shrink_to_fit();
     region_face_offsets.shrink_to_fit();
     region_faces.shrink_to_fit();
     zone_lines.shrink_to_fit();

@@ -13,6 +13,7 @@
 //  - Nothing here knows which file a zone came from, except the free-form ZoneSource notes.
 #pragma once
 
+#include "visibility/material_pixels.h"
 #include "visibility/math/aabb.h"
 #include "visibility/pvs.h"
 
@@ -20,6 +21,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -91,9 +93,18 @@ enum MaterialFlag : uint32_t {
 struct Material {
     std::string name;
     uint32_t width = 0, height = 0;
-    std::vector<uint8_t> rgba; // width*height*4 bytes, or empty when the file carries no pixels
-    uint32_t flags = 0;        // MaterialFlag bits
+    MaterialPixels pixels; // width*height texels (palettized when they fit), or none when the file carries none
+    uint32_t flags = 0;    // MaterialFlag bits
+
+    bool has_pixels() const { return !pixels.empty(); }
 };
+
+// Sets the material's size and pixels from width*height*4 RGBA bytes (rows top to bottom);
+// empty rgba with any size clears the pixels. Throws std::invalid_argument when the byte count
+// does not match the size.
+void set_material_rgba(Material& material, uint32_t width, uint32_t height, std::span<const uint8_t> rgba);
+// The material's pixels as width*height*4 RGBA bytes; empty when it has none.
+std::vector<uint8_t> material_rgba(const Material& material);
 
 struct Face {
     uint32_t first_triangle = 0; // into Mesh::indices / 3

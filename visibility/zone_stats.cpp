@@ -83,7 +83,7 @@ ZoneStats compute_zone_stats(const Zone& zone)
     s.vertices = static_cast<uint32_t>(zone.mesh.positions.size());
     s.materials = static_cast<uint32_t>(zone.materials.size());
     for (const Material& m : zone.materials)
-        s.materials_with_pixels += m.rgba.empty() ? 0 : 1;
+        s.materials_with_pixels += m.has_pixels() ? 1 : 0;
     s.zone_lines = static_cast<uint32_t>(zone.zone_lines.size());
     s.portals = zone.portals ? static_cast<uint32_t>(zone.portals->portals.size()) : 0;
     for (const Region& r : zone.regions)

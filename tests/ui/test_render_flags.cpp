@@ -145,13 +145,15 @@ Zone flagged_wall()
     zone.region_face_offsets = {0, 2, 5, 7};
 
     Material checker{"checker", 8, 8, {}, 0};
+    std::vector<uint8_t> rgba;
     for (uint32_t y = 0; y < 8; ++y)
         for (uint32_t x = 0; x < 8; ++x) {
             const bool light = (x + y) % 2 == 0;
             const uint8_t texel[4] = {uint8_t(light ? 150 : 90), uint8_t(light ? 120 : 80), uint8_t(light ? 100 : 70),
                                       255};
-            checker.rgba.insert(checker.rgba.end(), texel, texel + 4);
+            rgba.insert(rgba.end(), texel, texel + 4);
         }
+    set_material_rgba(checker, 8, 8, rgba);
     zone.materials.push_back(checker);
     zone.materials.push_back({"plain", 0, 0, {}, 0});
     return zone;

@@ -135,7 +135,7 @@ TEST_F(E1m1, MiptexDecodesWithTheKnownSizes)
         found = true;
         EXPECT_EQ(m.width, 16u);
         EXPECT_EQ(m.height, 64u);
-        EXPECT_EQ(m.rgba.size(), 16u * 64u * 4u);
+        EXPECT_EQ(material_rgba(m).size(), 16u * 64u * 4u);
     }
     EXPECT_TRUE(found);
 }

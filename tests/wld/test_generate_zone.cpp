@@ -168,7 +168,7 @@ TEST(Generate, SameSeedSameZoneOtherSeedOtherZone)
     EXPECT_EQ(a.mesh.positions, b.mesh.positions);
     EXPECT_EQ(a.mesh.indices, b.mesh.indices);
     EXPECT_EQ(a.tree.leaf_region, b.tree.leaf_region);
-    EXPECT_EQ(a.materials[0].rgba, b.materials[0].rgba);
+    EXPECT_EQ(material_rgba(a.materials[0]), material_rgba(b.materials[0]));
     EXPECT_NE(a.mesh.positions, c.mesh.positions);
 }
 

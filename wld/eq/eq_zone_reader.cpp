@@ -5,11 +5,15 @@
 #include "wld/common/quote.h"
 #include "wld/eq/pfs_archive.h"
 #include "wld/eq/stb_image_io.h"
+#include "wld/eq/convex_face_builder.h"
+#include "wld/eq/dds_decode.h"
 #include "wld/eq/wld_file.h"
 #include "wld/eq/wld_material.h"
 #include "wld/eq/wld_mesh.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -141,6 +145,63 @@ uint64_t first_vis_list_data(const WldRegion& region)
 
 // ---- The loader ----
 
+// Zone vertices by exact value (bit patterns of position and uv), so that equal vertices of
+// different meshes become one. Open addressing over flat arrays: nothing is allocated per vertex.
+class ZoneVertexIndex {
+public:
+    uint32_t find_or_add(const glm::vec3& position, const glm::vec2& uv, Mesh& mesh)
+    {
+        if (2 * (mesh.positions.size() + 1) > slots_.size())
+            grow(mesh);
+        const std::array<uint32_t, 5> key = bits_of(position, uv);
+        for (size_t slot = hash(key) & (slots_.size() - 1);; slot = (slot + 1) & (slots_.size() - 1)) {
+            const uint32_t held = slots_[slot];
+            if (held == kEmpty) {
+                const auto added = static_cast<uint32_t>(mesh.positions.size());
+                slots_[slot] = added;
+                mesh.positions.push_back(position);
+                mesh.uvs.push_back(uv);
+                return added;
+            }
+            if (bits_of(mesh.positions[held], mesh.uvs[held]) == key)
+                return held;
+        }
+    }
+
+private:
+    static constexpr uint32_t kEmpty = 0xFFFFFFFFu;
+
+    static std::array<uint32_t, 5> bits_of(const glm::vec3& p, const glm::vec2& uv)
+    {
+        return {std::bit_cast<uint32_t>(p.x), std::bit_cast<uint32_t>(p.y), std::bit_cast<uint32_t>(p.z),
+                std::bit_cast<uint32_t>(uv.x), std::bit_cast<uint32_t>(uv.y)};
+    }
+    static size_t hash(const std::array<uint32_t, 5>& key)
+    {
+        uint64_t h = 0x9E3779B97F4A7C15ull;
+        for (const uint32_t k : key) { // splitmix64's finalizer per word: every bit reaches the low ones
+            h ^= k;
+            h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+            h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+            h ^= h >> 31;
+        }
+        return size_t(h);
+    }
+    void grow(const Mesh& mesh)
+    {
+        slots_.assign(std::max<size_t>(1024, slots_.size() * 2), kEmpty);
+        for (uint32_t v = 0; v < mesh.positions.size(); ++v) {
+            const std::array<uint32_t, 5> key = bits_of(mesh.positions[v], mesh.uvs[v]);
+            size_t slot = hash(key) & (slots_.size() - 1);
+            while (slots_[slot] != kEmpty)
+                slot = (slot + 1) & (slots_.size() - 1);
+            slots_[slot] = v;
+        }
+    }
+
+    std::vector<uint32_t> slots_; // zone vertex, or kEmpty; a power of two, at most half full
+};
+
 struct MaterialKey {
     std::string file_lower;
     bool visible;
@@ -198,6 +259,8 @@ private:
     std::map<uint32_t, std::vector<uint32_t>> palettes_; // 0x31 number -> zone material per entry
     std::map<uint32_t, std::pair<uint32_t, uint32_t>> meshes_; // 0x36 number -> first face, face count
     std::map<uint32_t, Aabb> mesh_box_;                        // 0x36 number -> its vertices' box
+    ZoneVertexIndex vertices_;
+    std::vector<uint32_t> mesh_vertex_; // the current mesh's vertex -> zone vertex
 };
 
 void EqZoneLoader::describe_file()
@@ -320,32 +383,41 @@ void EqZoneLoader::read_materials()
     }
 }
 
-// Appends the mesh's vertices and triangles (one face each) and records where they went.
+// Appends the mesh's triangles and records where they went. A run of triangles of one material
+// that forms a convex planar polygon becomes one face (convex_face_builder.h). Its vertices join
+// the zone's shared vertex list: each (position, uv) is one zone vertex however many meshes hold
+// it (neighbouring regions repeat the corners they share).
 void EqZoneLoader::copy_mesh(uint32_t number)
 {
     const WldMesh m = parse_mesh(wld_, number);
     Mesh& mesh = zone_.mesh;
-    const auto base = static_cast<uint32_t>(mesh.positions.size());
+    const bool has_uvs = m.uvs.size() == m.positions.size();
+    mesh_vertex_.resize(m.positions.size());
+    for (size_t v = 0; v < m.positions.size(); ++v)
+        mesh_vertex_[v] = vertices_.find_or_add(m.positions[v], has_uvs ? m.uvs[v] : glm::vec2(0.0f), mesh);
     const auto first_face = static_cast<uint32_t>(mesh.faces.size());
-    mesh.positions.insert(mesh.positions.end(), m.positions.begin(), m.positions.end());
-    if (m.uvs.size() == m.positions.size())
-        mesh.uvs.insert(mesh.uvs.end(), m.uvs.begin(), m.uvs.end());
-    else
-        mesh.uvs.resize(mesh.positions.size(), glm::vec2(0.0f));
     const uint32_t palette = resolve_fragment_ref(wld_, m.material_palette_ref);
     const auto found = palettes_.find(palette);
     const std::vector<uint16_t> materials = face_materials(m);
+    ConvexFaceBuilder polygon;
     for (size_t f = 0; f < m.faces.size(); ++f) {
         const uint32_t material =
             found != palettes_.end() ? found->second[materials[f]] : intern_material("", false, false);
-        mesh.faces.push_back({static_cast<uint32_t>(mesh.triangle_count()), 1, material});
+        const bool joins =
+            f > 0 && material == mesh.faces.back().material && polygon.try_add(m.faces[f].vertices);
+        if (joins) {
+            ++mesh.faces.back().triangle_count;
+        } else {
+            polygon.start(m.positions, m.faces[f].vertices);
+            mesh.faces.push_back({static_cast<uint32_t>(mesh.triangle_count()), 1, material});
+        }
         for (const uint16_t v : m.faces[f].vertices)
-            mesh.indices.push_back(base + v);
+            mesh.indices.push_back(mesh_vertex_[v]);
     }
     Aabb box;
     for (const glm::vec3& p : m.positions)
         box.grow(p);
-    meshes_[number] = {first_face, static_cast<uint32_t>(m.faces.size())};
+    meshes_[number] = {first_face, static_cast<uint32_t>(mesh.faces.size()) - first_face};
     mesh_box_[number] = box;
 }
 
@@ -383,7 +455,7 @@ void EqZoneLoader::read_faces()
 void EqZoneLoader::read_textures()
 {
     std::vector<std::string> missing, undecodable;
-    uint64_t decoded = 0;
+    uint64_t decoded = 0, dds_decoded = 0;
     for (Material& m : zone_.materials) {
         if (m.name.empty())
             continue;
@@ -392,21 +464,24 @@ void EqZoneLoader::read_textures()
             continue;
         }
         std::string why;
-        std::optional<RgbaImage> image = decode_bmp(archive_.read(m.name), &why);
+        const std::vector<uint8_t> bytes = archive_.read(m.name);
+        // By the magic, not the name: archives hold DDS data under .bmp names too.
+        const bool dds = looks_like_dds(bytes);
+        std::optional<RgbaImage> image = dds ? decode_dds(bytes, &why) : decode_bmp(bytes, &why);
+        dds_decoded += dds && image;
         if (!image) {
             undecodable.push_back(m.name + " (" + why + ")");
             continue;
         }
-        m.width = image->width;
-        m.height = image->height;
-        m.rgba = std::move(image->rgba);
+        set_material_rgba(m, image->width, image->height, image->rgba);
         ++decoded;
     }
     zone_.source.counts.emplace_back("textures.decoded", decoded);
+    zone_.source.counts.emplace_back("textures.dds", dds_decoded);
     if (!missing.empty())
         note(std::to_string(missing.size()) + " textures are not in the archive: " + name_list(missing));
     if (!undecodable.empty())
-        note(std::to_string(undecodable.size()) + " textures are not BMPs pvscope can decode: " +
+        note(std::to_string(undecodable.size()) + " textures are neither BMP nor DDS (DXT1/3/5) pvscope can decode: " +
              name_list(undecodable));
 }
 

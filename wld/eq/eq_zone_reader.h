@@ -17,16 +17,19 @@
 //    parse_bsp_tree has checked children, region numbers and that no node is reached twice.
 //    A region that is no leaf or several leaves is allowed (noted).
 //  - Faces: each region's 0x36 (its mesh_ref) is copied into the zone mesh once, however many
-//    regions name it: positions as decoded, uvs as decoded (zeros when the mesh has none), one
-//    zone Face per triangle with the winding as stored (contested, §9.6: use two-sided). The
-//    region lists that mesh's faces. A legacy 0x2C mesh is not read (noted).
+//    regions name it, with the winding as stored (contested, §9.6: use two-sided). Vertices are
+//    shared: each distinct (position, uv) as decoded (uv zeros when the mesh has none) is one
+//    zone vertex, whichever meshes hold it. Consecutive triangles of one material that form a
+//    convex planar polygon are one zone Face (convex_face_builder.h); other triangles a Face
+//    each. The region lists that mesh's faces. A legacy 0x2C mesh is not read (noted).
 //  - Region bounds: its mesh's vertices; without a mesh its sphere's box (center ± radius);
 //    without a sphere (flag bit 0 clear, or a radius that is negative or not finite), empty.
 //  - Materials: one per distinct (texture file ignoring case, visible) pair over every 0x31
 //    palette in file order, named by the texture file as first stored; kMaterialInvisible when
 //    material_is_visible says no, kMaterialSky for a sky-dome render method. A mesh without a
 //    palette uses an invisible material named "". Pixels come from the archive member of that
-//    name when it decodes as a BMP (stb_image_io.h); otherwise none, and a note names it.
+//    name, decoded by its magic: DDS (dds_decode.h) or BMP (stb_image_io.h); otherwise none, and
+//    a note names it with the reason. They are kept palettized when they fit (MaterialPixels).
 //  - PVS: region k's first VISLIST decoded (byte or word form); no list or range_count 0 is a
 //    missing row (all visible, as WQ). No row in the file at all: no baked PVS, and a note.
 //    A malformed list throws FileError at the byte where decoding stopped.

@@ -1,6 +1,6 @@
-// Simple procedural textures for generated zones: 64x64 RGBA, made from the texture's own
-// small hash noise so they are identical on every machine (no std:: distributions, whose
-// output is implementation-defined).
+// Simple procedural textures for generated zones: 64x64, made from the texture's own small hash
+// noise so they are identical on every machine (no std:: distributions, whose output is
+// implementation-defined). Each keeps to at most 256 colours, so it is stored palettized.
 #pragma once
 
 #include "visibility/zone.h"

@@ -39,7 +39,7 @@ ObjExport export_obj(const Zone& zone, const std::string& base_name)
     for (size_t m = 0; m < zone.materials.size(); ++m) {
         material_names[m] = safe_name(zone.materials[m].name, m) + "_" + std::to_string(m);
         e.mtl += "newmtl " + material_names[m] + "\nKd 1 1 1\n";
-        if (!zone.materials[m].rgba.empty()) {
+        if (zone.materials[m].has_pixels()) {
             const std::string bmp = base_name + "_" + material_names[m] + ".bmp";
             e.mtl += "map_Kd " + bmp + "\n";
             e.textures.emplace_back(bmp, m);
@@ -94,7 +94,7 @@ void save_obj(const Zone& zone, const std::string& obj_path)
     write_whole_file(mtl_path, std::vector<uint8_t>(e.mtl.begin(), e.mtl.end()));
     for (const auto& [bmp, m] : e.textures) {
         const Material& material = zone.materials[m];
-        write_whole_file((dir / bmp).string(), encode_bmp(material.width, material.height, material.rgba));
+        write_whole_file((dir / bmp).string(), encode_bmp(material.width, material.height, material_rgba(material)));
     }
 }
 

@@ -324,12 +324,13 @@ void read_textures(const Bsp& bsp, Zone& zone)
             bsp.in.fail(at + 24, "miptex '" + m.name + "' pixels run past the end of the texture lump");
         const auto pixels = bsp.in.bytes(at + mip0, texels, "miptex pixels");
         const bool fence = m.name[0] == '{';
-        m.rgba.resize(texels * 4);
+        std::vector<uint8_t> rgba(texels * 4);
         for (uint64_t p = 0; p < texels; ++p) {
             const uint8_t index = pixels[p];
-            std::copy_n(kQuakePalette.begin() + 3 * index, 3, m.rgba.begin() + static_cast<std::ptrdiff_t>(4 * p));
-            m.rgba[4 * p + 3] = (fence && index == 255) ? 0 : 255;
+            std::copy_n(kQuakePalette.begin() + 3 * index, 3, rgba.begin() + static_cast<std::ptrdiff_t>(4 * p));
+            rgba[4 * p + 3] = (fence && index == 255) ? 0 : 255;
         }
+        set_material_rgba(m, m.width, m.height, rgba); // 256 palette entries at most: kept palettized
     }
 }
 
