@@ -1,6 +1,7 @@
 #include "app/cmd_gen.h"
 
 #include "app/cmd_info.h"
+#include "app/progress_bar.h"
 #include "visibility/file_error.h"
 #include "wld/convert.h"
 #include "wld/gen/generate_zone.h"
@@ -9,6 +10,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace pvs::app {
 
@@ -33,11 +35,23 @@ void register_gen_command(CLI::App& app, int& exit_code)
     cmd->add_option("--cell", options->params.cell_size, "World units per grid cell (rooms are 3 cells high)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
+    cmd->add_flag("--no-bake{false},--bake", options->params.bake,
+                  "Do not bake the PVS (by default the zone is baked with portal-full when made)");
     cmd->add_flag("--json", options->json, "Print the report as JSON");
     cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
     cmd->callback([options, &exit_code] {
         const auto start = std::chrono::steady_clock::now();
-        const Zone zone = gen::generate_zone(options->params);
+        gen::GenParams params = options->params;
+        std::optional<ProgressBar> bar; // made on the first call: only a bake that runs shows it
+        params.bake_progress = [&bar](double fraction) {
+            if (!bar)
+                bar.emplace(stderr, "bake");
+            bar->update(fraction);
+            return true;
+        };
+        const Zone zone = gen::generate_zone(params);
+        if (bar)
+            bar->finish();
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         print_zone_report(zone, ms, options->json);
         exit_code = 0;

@@ -1,5 +1,5 @@
-// `pvscope gen --rooms N --seed S [--json] [-o zone.s3d|zone.obj]`: make a procedural demo zone,
-// report on it, and write it if asked.
+// `pvscope gen --rooms N --seed S [--no-bake] [--json] [-o zone.s3d|zone.obj]`: make a procedural demo
+// zone (baked with portal-full unless --no-bake), report on it, and write it if asked.
 #pragma once
 
 #include <CLI/App.hpp>

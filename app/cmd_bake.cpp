@@ -1,0 +1,369 @@
+#include "app/cmd_bake.h"
+
+#include "app/progress_bar.h"
+#include "visibility/bit_row.h"
+#include "visibility/file_error.h"
+#include "visibility/portal/portal_vis.h"
+#include "visibility/portal/portalize.h"
+#include "wld/common/read_file.h"
+#include "wld/convert.h"
+#include "wld/eq/eq_zone_reader.h"
+#include "wld/quake/bsp29_reader.h"
+#include "wld/quake/bsp29_vis_writer.h"
+#include "wld/quake/prt_file.h"
+#include "wld/zone_file.h"
+
+// The whole CLI11 (not only App.hpp): its config and formatter classes are header-only, and a
+// test that links this file without main.cpp needs their definitions here.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <sys/resource.h>
+
+namespace pvs::app {
+
+namespace {
+
+constexpr int kExitFileError = 1;
+constexpr int kExitBadArguments = 2;
+constexpr int kExitCancelled = 130; // 128 + SIGINT, what a shell reports for Ctrl-C
+
+enum class InputFormat { QuakeBsp, EqS3d };
+
+struct Input {
+    InputFormat format;
+    std::vector<uint8_t> bytes; // the original file (a BSP is written back from it)
+    Zone zone;
+};
+
+const char* format_name(InputFormat f) { return f == InputFormat::QuakeBsp ? "Quake BSP 29" : "EverQuest S3D"; }
+const char* format_extension(InputFormat f) { return f == InputFormat::QuakeBsp ? ".bsp" : ".s3d"; }
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The whole process's peak resident set so far (Linux reports ru_maxrss in KiB).
+size_t peak_rss_bytes()
+{
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return size_t(usage.ru_maxrss) * 1024;
+}
+
+std::string lowercase_extension(const std::string& path)
+{
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+// The argument errors, each a sentence; empty when the options are usable.
+std::string check_options(const BakeOptions& o)
+{
+    if (o.input.empty())
+        return "no input file";
+    if (o.output.empty())
+        return "no output file: give -o OUT (.bsp for a Quake map, .s3d for an EverQuest zone)";
+    if (o.method != "portal-fast" && o.method != "portal-full")
+        return "--method must be portal-fast or portal-full, not '" + o.method + "'";
+    if (o.level < 0 || o.level > 4)
+        return "--level must be 0..4, not " + std::to_string(o.level);
+    if (o.sky != "sky-to-sky" && o.sky != "all" && o.sky != "none")
+        return "--sky must be sky-to-sky, all or none, not '" + o.sky + "'";
+    if (!o.prt_out.empty() && o.prt_out == o.output)
+        return "--write-prt and -o name the same file";
+    return {};
+}
+
+Input load_input(const std::string& path)
+{
+    Input in{InputFormat::QuakeBsp, read_whole_file(path), {}};
+    if (quake::looks_like_bsp29(in.bytes)) {
+        in.zone = quake::load_bsp29(in.bytes, path);
+    } else if (eq::looks_like_pfs(in.bytes)) {
+        in.format = InputFormat::EqS3d;
+        in.zone = eq::load_eq_zone(in.bytes, path);
+    } else {
+        load_zone(path); // throws the loader's message for formats it recognises but cannot read
+        throw FileError(path, 0, "bake writes Quake BSP 29 and EverQuest S3D files only");
+    }
+    return in;
+}
+
+// --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
+// the zone's regions.
+PortalSet portals_from_file(const std::string& prt_path, const Zone& zone, const std::string& zone_path)
+{
+    quake::PrtFile prt = quake::load_prt(prt_path);
+    if (prt.leaf_count != zone.region_count())
+        throw FileError(prt_path, 0,
+                        "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
+                            std::to_string(zone.region_count()) +
+                            " regions (PRT leaf k must be region k: a portal file of another map?)");
+    return std::move(prt.portals);
+}
+
+SkyPortals sky_mode(const std::string& name)
+{
+    return name == "all" ? SkyPortals::All : name == "none" ? SkyPortals::None : SkyPortals::SkyToSky;
+}
+
+// Row-by-row comparison of the bake with the PVS the file had (missing rows: all visible).
+nlohmann::json compare_with_file(const Pvs& baked, const Pvs& file)
+{
+    std::vector<uint64_t> ours(baked.words_per_row()), theirs(file.words_per_row());
+    size_t only_ours = 0, only_file = 0, ours_total = 0, file_total = 0, rows_differing = 0, not_within_file = 0;
+    for (uint32_t r = 0; r < baked.region_count(); ++r) {
+        baked.decode_row(r, ours);
+        file.decode_row(r, theirs);
+        size_t row_only_ours = 0, row_only_file = 0;
+        for (size_t w = 0; w < ours.size(); ++w) {
+            row_only_ours += size_t(std::popcount(ours[w] & ~theirs[w]));
+            row_only_file += size_t(std::popcount(theirs[w] & ~ours[w]));
+        }
+        only_ours += row_only_ours;
+        only_file += row_only_file;
+        rows_differing += (row_only_ours + row_only_file) > 0 ? 1 : 0;
+        not_within_file += row_only_ours > 0 ? 1 : 0;
+        ours_total += bits::count(ours);
+        file_total += bits::count(theirs);
+    }
+    const double rows = std::max<double>(baked.region_count(), 1.0);
+    return {{"mean_visible_file", double(file_total) / rows},
+            {"mean_visible_baked", double(ours_total) / rows},
+            {"bits_only_baked", only_ours},
+            {"bits_only_file", only_file},
+            {"rows_differing", rows_differing},
+            {"rows_with_bits_only_baked", not_within_file},
+            {"file_missing_rows", file.missing_row_count()}};
+}
+
+struct BakeRun {
+    PortalSet portals;
+    std::string portal_source = "tree";
+    std::optional<PortalStats> portal_stats;
+    double portal_seconds = 0.0;
+    Pvs pvs;
+    VisReport report;
+};
+
+void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
+{
+    if (in.format == InputFormat::QuakeBsp) {
+        quake::Bsp29VisStats stats;
+        write_whole_file(o.output, quake::write_bsp29_vis(in.bytes, pvs, o.input, &stats));
+        std::fprintf(err, "wrote %s: %u rows, %u distinct, %zu bytes of visdata\n", o.output.c_str(), stats.rows,
+                     stats.unique_rows, stats.visdata_bytes);
+        return;
+    }
+    Zone zone = in.zone; // a copy: the comparison still needs the file's own PVS
+    zone.baked_pvs = pvs;
+    for (const std::string& note : write_zone(zone, o.output, ZoneOutput::S3d))
+        std::fprintf(err, "note: %s\n", note.c_str());
+    std::fprintf(err, "wrote %s\n", o.output.c_str());
+}
+
+nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun& run, double load_seconds,
+                           double write_seconds)
+{
+    const VisReport& r = run.report;
+    const uint32_t regions = run.pvs.region_count();
+    nlohmann::json j = {{"input", o.input},
+                        {"output", o.output},
+                        {"format", format_name(in.format)},
+                        {"method", o.method},
+                        {"level", o.method == "portal-full" ? nlohmann::json(o.level) : nlohmann::json(nullptr)},
+                        {"threads", r.threads},
+                        {"portal_source", run.portal_source},
+                        {"portals", r.portals},
+                        {"portals_skipped", r.portals_skipped},
+                        {"regions", regions},
+                        {"time_seconds", r.seconds},
+                        {"base_seconds", r.base_seconds},
+                        {"load_seconds", load_seconds},
+                        {"portalize_seconds", run.portal_seconds},
+                        {"write_seconds", write_seconds},
+                        {"peak_memory_estimate_bytes", r.peak_bytes_estimate},
+                        {"peak_rss_bytes", peak_rss_bytes()},
+                        {"mean_visible", r.mean_visible},
+                        {"mean_visible_percent", regions ? 100.0 * r.mean_visible / regions : 0.0},
+                        {"saw_into_own_region", r.saw_into_own_region},
+                        {"leaf_recursions", r.leaf_recursions}};
+    if (run.portal_stats)
+        j["leaks"] = {{"leaves_touching_world", run.portal_stats->leaves_touching_world.size()},
+                      {"leaves_touching_outside", run.portal_stats->leaves_touching_outside.size()}};
+    j["file_pvs"] = in.zone.baked_pvs ? compare_with_file(run.pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
+    return j;
+}
+
+void write_report(const std::string& path, const nlohmann::json& report)
+{
+    const std::string text = report.dump(2) + "\n";
+    if (path == "-") {
+        std::fputs(text.c_str(), stdout);
+        return;
+    }
+    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err)
+{
+    const auto start = std::chrono::steady_clock::now();
+    if (!o.prt_in.empty()) {
+        run.portals = portals_from_file(o.prt_in, zone, o.input);
+        run.portal_source = o.prt_in;
+    } else {
+        PortalOptions options;
+        options.sky = sky_mode(o.sky);
+        run.portal_stats.emplace();
+        run.portals = build_zone_portals(zone, options, &*run.portal_stats);
+        // Only the world box: an EverQuest zone's walls are region-less (outside) leaves, so
+        // leaves next to them are normal there.
+        if (!run.portal_stats->leaves_touching_world.empty())
+            std::fprintf(err,
+                         "warning: %s leaks: %zu open leaves touch the world box; no portal leads outside, the PVS "
+                         "covers the open leaves only\n",
+                         o.input.c_str(), run.portal_stats->leaves_touching_world.size());
+    }
+    run.portal_seconds = seconds_since(start);
+    if (run.portals.portals.empty())
+        std::fprintf(err, "warning: %s has no portals: every region will see only itself\n", o.input.c_str());
+}
+
+bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, const std::atomic<bool>* cancel)
+{
+    VisParams params;
+    params.method = o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
+    params.level = o.level;
+    params.threads = o.threads;
+    ProgressBar bar(err, "bake");
+    params.progress = [&](double fraction) {
+        bar.update(fraction);
+        return !(cancel && cancel->load());
+    };
+    run.pvs = bake_portal_vis(run.portals, uint32_t(zone.region_count()), params, &run.report);
+    bar.finish(run.report.cancelled ? "cancelled" : "done");
+    return !run.report.cancelled;
+}
+
+int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
+{
+    const auto load_start = std::chrono::steady_clock::now();
+    const Input in = load_input(o.input);
+    const double load_seconds = seconds_since(load_start);
+    if (lowercase_extension(o.output) != format_extension(in.format)) {
+        std::fprintf(err,
+                     "pvscope: error: '%s' is in the %s format and bake writes it back in the same format, so the output "
+                     "must end in %s, not '%s' (to change the format, run `pvscope convert` on the result)\n",
+                     o.input.c_str(), format_name(in.format), format_extension(in.format), o.output.c_str());
+        return kExitBadArguments;
+    }
+    BakeRun run;
+    find_portals(o, in.zone, run, err);
+    if (!bake(o, in.zone, run, err, cancel)) {
+        std::fprintf(err, "pvscope: bake cancelled: nothing was written\n");
+        return kExitCancelled;
+    }
+    const auto write_start = std::chrono::steady_clock::now();
+    write_output(o, in, run.pvs, err);
+    if (!o.prt_out.empty()) {
+        quake::save_prt(o.prt_out, {uint32_t(in.zone.region_count()), run.portals});
+        std::fprintf(err, "wrote %s: %zu portals\n", o.prt_out.c_str(), run.portals.portals.size());
+    }
+    const double write_seconds = seconds_since(write_start);
+    std::fprintf(err, "%s: %zu regions, %zu portals (%zu skipped), mean visible %.1f, %.2f s (base %.2f s), %u threads\n",
+                 o.method.c_str(), in.zone.region_count(), run.report.portals, run.report.portals_skipped,
+                 run.report.mean_visible, run.report.seconds, run.report.base_seconds, run.report.threads);
+    if (!o.report.empty())
+        write_report(o.report, report_json(o, in, run, load_seconds, write_seconds));
+    return 0;
+}
+
+// SIGINT during a bake: only sets the flag (lock-free atomic store, async-signal-safe).
+std::atomic<bool> g_interrupted{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+extern "C" void on_sigint(int) { g_interrupted.store(true); }
+
+// Installs on_sigint for its lifetime and restores the previous handler.
+class SigintScope {
+public:
+    SigintScope()
+    {
+        g_interrupted.store(false);
+        struct sigaction action{};
+        action.sa_handler = on_sigint;
+        sigemptyset(&action.sa_mask);
+        sigaction(SIGINT, &action, &previous_);
+    }
+    ~SigintScope() { sigaction(SIGINT, &previous_, nullptr); }
+    SigintScope(const SigintScope&) = delete;
+    SigintScope& operator=(const SigintScope&) = delete;
+
+private:
+    struct sigaction previous_{};
+};
+
+} // namespace
+
+int run_bake(const BakeOptions& options, std::FILE* err, const std::atomic<bool>* cancel)
+{
+    if (const std::string problem = check_options(options); !problem.empty()) {
+        std::fprintf(err, "pvscope: error: %s\n", problem.c_str());
+        return kExitBadArguments;
+    }
+    try {
+        return run_checked(options, err, cancel);
+    } catch (const FileError& e) {
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+        return kExitFileError;
+    } catch (const std::invalid_argument& e) { // the zone or portals cannot be written in the format
+        std::fprintf(err, "pvscope: error: %s: %s\n", options.input.c_str(), e.what());
+        return kExitFileError;
+    }
+}
+
+void register_bake_command(CLI::App& app, int& exit_code)
+{
+    auto o = std::make_shared<BakeOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "bake", "Compute a PVS with the portal-vis baker and write the zone back in its own format (.bsp: new "
+                "visdata, other lumps unchanged; .s3d: new VISLISTs). Ctrl-C cancels and writes nothing.");
+    cmd->add_option("file", o->input, "Zone file (Quake .bsp or EverQuest .s3d)")->required();
+    cmd->add_option("-o,--output", o->output, "Output file, in the input's format (.bsp or .s3d)")->required();
+    cmd->add_option("--method", o->method, "portal-fast (base vis only, loose) or portal-full (clipped flow)")
+        ->check(CLI::IsMember({"portal-fast", "portal-full"}))
+        ->capture_default_str();
+    cmd->add_option("--level", o->level, "portal-full: separating-plane test level 0..4")
+        ->check(CLI::Range(0, 4))
+        ->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores); the result does not depend on it")
+        ->capture_default_str();
+    cmd->add_option("--sky", o->sky, "Portals at sky leaves when built from the tree: sky-to-sky (ericw's default), "
+                                     "all (-transsky), none (as id's shipped maps)")
+        ->check(CLI::IsMember({"sky-to-sky", "all", "none"}))
+        ->capture_default_str();
+    cmd->add_option("--prt", o->prt_in, "Read the portals from this PRT1 file (leaf k = region k) instead of "
+                                        "building them from the BSP tree")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--write-prt", o->prt_out, "Also write the portals the bake used to this PRT1 file");
+    cmd->add_option("--report", o->report, "Write a JSON report (times, memory, portals, comparison with the "
+                                           "file's own PVS) to this file, '-' for stdout");
+    cmd->callback([o, &exit_code] {
+        const SigintScope sigint;
+        exit_code = run_bake(*o, stderr, &g_interrupted);
+    });
+}
+
+} // namespace pvs::app

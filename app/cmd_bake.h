@@ -1,0 +1,48 @@
+// `pvscope bake FILE --method portal-fast|portal-full [--level L] [--threads N] [--sky MODE]
+//  [--prt IN.prt] [--write-prt OUT.prt] [--report REPORT.json] -o OUT`: compute a PVS with the
+// portal-vis baker (visibility/portal/portal_vis.h) and write the zone back in its own format.
+//
+//  - Input: a Quake BSP 29 or an EverQuest .s3d, recognised from the bytes. Portals come from
+//    --prt (PRT1, whose leaf k must be region k: the file must name exactly the zone's region
+//    count) or else are built from the zone's BSP tree (build_zone_portals). A sibling .prt
+//    next to a .bsp is NOT used unless named with --prt, so the source is always explicit.
+//  - Output: the input's format only. A .bsp gets a new VISIBILITY lump and leaf visofs, all
+//    other lumps byte-identical (wld/quake/bsp29_vis_writer.h); an .s3d is re-written with the
+//    baked rows as 0x22 VISLISTs (write_zone). OUT must end in the input format's extension
+//    (.bsp / .s3d), otherwise the command refuses and says so (use `pvscope convert` after).
+//  - --write-prt writes the portals the bake used as PRT1 (leaf k = region k).
+//  - --report writes a JSON report (fields documented in docs/baking.md; "-" = stdout).
+//  - Progress on stderr: a bar on a terminal, "bake: 40%" lines otherwise. Ctrl-C (SIGINT)
+//    cancels: nothing is written and the exit code is 130.
+// Exit codes: 0 done, 1 a file could not be read or written, 2 bad arguments, 130 cancelled.
+#pragma once
+
+#include <CLI/App.hpp>
+
+#include <atomic>
+#include <cstdio>
+#include <string>
+
+namespace pvs::app {
+
+struct BakeOptions {
+    std::string input;
+    std::string output;
+    std::string method = "portal-full"; // portal-fast | portal-full
+    int level = 4;                      // portal-full's separator test level, 0..4
+    unsigned threads = 0;               // 0 = all cores
+    std::string sky = "sky-to-sky";     // sky-to-sky | all | none (PortalOptions::sky)
+    std::string prt_in;                 // portals from this PRT1 file instead of the tree
+    std::string prt_out;                // also write the portals used as PRT1
+    std::string report;                 // JSON report path, "-" for stdout
+};
+
+// Runs the bake; messages and progress go to `err`. `cancel`, when given, is polled while the
+// bake runs (the command passes its SIGINT flag): true cancels. Returns the exit code.
+int run_bake(const BakeOptions& options, std::FILE* err = stderr, const std::atomic<bool>* cancel = nullptr);
+
+// Registers the subcommand; `exit_code` receives the command's result when it runs. While the
+// command runs, SIGINT sets a flag that cancels the bake (the previous handler is restored).
+void register_bake_command(CLI::App& app, int& exit_code);
+
+} // namespace pvs::app

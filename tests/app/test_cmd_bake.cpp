@@ -1,0 +1,292 @@
+// `pvscope bake` through its command function (app/cmd_bake.h), no subprocess:
+//  - visdemo's example.bsp (made elsewhere) baked portal-full -> OUT.bsp: the PVS read back from
+//    OUT equals bake_portal_vis on the portals built from the same tree; the report's numbers
+//    agree with an independent count over OUT's and the original file's rows; the PRT written
+//    reads back as the portals used; --prt example.prt bakes from qbsp's portals;
+//  - an EverQuest .s3d (a small generated zone written by write_eq_zone) -> OUT.s3d with the
+//    baked VISLISTs;
+//  - bad arguments, a portal file of another map and a cancelled bake: a clear message, the
+//    documented exit code, and no output file.
+#include "app/cmd_bake.h"
+
+#include "tests/support/test_data.h"
+#include "visibility/bit_row.h"
+#include "visibility/portal/portal_vis.h"
+#include "visibility/portal/portalize.h"
+#include "wld/convert.h"
+#include "wld/eq/eq_zone_reader.h"
+#include "wld/gen/generate_zone.h"
+#include "wld/quake/bsp29_reader.h"
+#include "wld/quake/prt_file.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <bit>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+namespace pvs {
+namespace {
+
+namespace fs = std::filesystem;
+using Rows = std::vector<std::vector<uint64_t>>;
+
+Rows rows_of(const Pvs& pvs)
+{
+    Rows rows(pvs.region_count(), std::vector<uint64_t>(pvs.words_per_row()));
+    for (uint32_t r = 0; r < pvs.region_count(); ++r)
+        pvs.decode_row(r, rows[r]);
+    return rows;
+}
+
+std::string read_text(const fs::path& path)
+{
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+// A scratch directory per test, removed afterwards.
+class Bake : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        dir_ = fs::temp_directory_path() /
+               ("pvscope_bake_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+                std::to_string(::getpid()));
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // Runs the command with its messages captured in err_.
+    int run(const app::BakeOptions& options, const std::atomic<bool>* cancel = nullptr)
+    {
+        std::FILE* err = std::tmpfile();
+        const int code = app::run_bake(options, err, cancel);
+        std::rewind(err);
+        err_.clear();
+        char buffer[4096];
+        size_t n;
+        while ((n = std::fread(buffer, 1, sizeof buffer, err)) > 0)
+            err_.append(buffer, n);
+        std::fclose(err);
+        return code;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    fs::path dir_;
+    std::string err_;
+};
+
+Pvs bake_directly(const PortalSet& portals, uint32_t regions, VisParams::Method method)
+{
+    VisParams params;
+    params.method = method;
+    params.threads = 2;
+    return bake_portal_vis(portals, regions, params);
+}
+
+TEST_F(Bake, VisdemoEndToEndGivesTheBakersPvsAndAConsistentReport)
+{
+    SHARED_DATA_OR_SKIP(input, "visdemo/example.bsp");
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("out.bsp");
+    o.method = "portal-full";
+    o.threads = 2;
+    o.report = path("report.json");
+    o.prt_out = path("used.prt");
+    ASSERT_EQ(run(o), 0) << err_;
+
+    const std::vector<uint8_t> original_bytes = test::read_bytes(input);
+    const Zone original = quake::load_bsp29(original_bytes, input);
+    const Zone out = quake::load_bsp29(test::read_bytes(o.output), o.output);
+    ASSERT_TRUE(out.baked_pvs.has_value());
+    const PortalSet portals = build_zone_portals(original);
+    const Pvs expected = bake_directly(portals, uint32_t(original.region_count()), VisParams::Method::Full);
+    EXPECT_EQ(rows_of(*out.baked_pvs), rows_of(expected));
+    EXPECT_NE(err_.find("bake: 100%"), std::string::npos) << err_; // not a terminal: percentage lines
+
+    // The report, against counts made here from the two files' rows.
+    const nlohmann::json report = nlohmann::json::parse(read_text(o.report));
+    for (const char* field : {"time_seconds", "base_seconds", "peak_memory_estimate_bytes", "peak_rss_bytes", "portals",
+                              "portals_skipped", "regions", "mean_visible", "file_pvs", "method", "threads"})
+        EXPECT_TRUE(report.contains(field)) << field;
+    EXPECT_EQ(report["regions"], original.region_count());
+    EXPECT_EQ(report["portals"], portals.portals.size());
+    EXPECT_EQ(report["portals_skipped"], 0);
+    EXPECT_EQ(report["method"], "portal-full");
+    EXPECT_EQ(report["level"], 4);
+    EXPECT_EQ(report["portal_source"], "tree");
+    EXPECT_GE(report["time_seconds"].get<double>(), report["base_seconds"].get<double>());
+    EXPECT_GT(report["peak_rss_bytes"].get<size_t>(), 1000000u);
+    EXPECT_GT(report["peak_memory_estimate_bytes"].get<size_t>(), 0u);
+    const Rows ours = rows_of(*out.baked_pvs), file = rows_of(*original.baked_pvs);
+    size_t ours_total = 0, file_total = 0, only_ours = 0, only_file = 0;
+    for (size_t r = 0; r < ours.size(); ++r) {
+        ours_total += bits::count(ours[r]);
+        file_total += bits::count(file[r]);
+        for (size_t w = 0; w < ours[r].size(); ++w) {
+            only_ours += size_t(std::popcount(ours[r][w] & ~file[r][w]));
+            only_file += size_t(std::popcount(file[r][w] & ~ours[r][w]));
+        }
+    }
+    const double n = double(ours.size());
+    EXPECT_DOUBLE_EQ(report["mean_visible"].get<double>(), double(ours_total) / n);
+    EXPECT_DOUBLE_EQ(report["file_pvs"]["mean_visible_baked"].get<double>(), double(ours_total) / n);
+    EXPECT_DOUBLE_EQ(report["file_pvs"]["mean_visible_file"].get<double>(), double(file_total) / n);
+    EXPECT_EQ(report["file_pvs"]["bits_only_baked"], only_ours);
+    EXPECT_EQ(report["file_pvs"]["bits_only_file"], only_file);
+
+    // The portals written are the ones used, in PRT1 numbering (leaf k = region k).
+    const quake::PrtFile written = quake::load_prt(o.prt_out);
+    EXPECT_EQ(written.leaf_count, original.region_count());
+    EXPECT_EQ(written.portals.portals.size(), portals.portals.size());
+    EXPECT_EQ(written.portals.points, portals.points);
+}
+
+TEST_F(Bake, PortalsFromAPrtFileAreTheOnesBaked)
+{
+    SHARED_DATA_OR_SKIP(input, "visdemo/example.bsp");
+    SHARED_DATA_OR_SKIP(prt, "visdemo/example.prt");
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("out.bsp");
+    o.method = "portal-fast";
+    o.prt_in = prt;
+    o.report = path("report.json");
+    ASSERT_EQ(run(o), 0) << err_;
+    const Zone out = quake::load_bsp29(test::read_bytes(o.output), o.output);
+    const quake::PrtFile file = quake::load_prt(prt);
+    const Pvs expected = bake_directly(file.portals, file.leaf_count, VisParams::Method::Fast);
+    ASSERT_TRUE(out.baked_pvs.has_value());
+    EXPECT_EQ(rows_of(*out.baked_pvs), rows_of(expected));
+    const nlohmann::json report = nlohmann::json::parse(read_text(o.report));
+    EXPECT_EQ(report["portal_source"], prt);
+    EXPECT_EQ(report["portals"], file.portals.portals.size());
+    EXPECT_TRUE(report["level"].is_null()); // portal-fast has no level
+    EXPECT_FALSE(report.contains("leaks"));
+}
+
+TEST_F(Bake, AnEverQuestZoneGetsTheBakedRowsAsVislists)
+{
+    const Zone generated = gen::generate_zone({8, 5, 32.0f});
+    const std::string input = path("zone.s3d");
+    write_zone(generated, input, ZoneOutput::S3d);
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("baked.s3d");
+    o.method = "portal-full";
+    o.threads = 1;
+    ASSERT_EQ(run(o), 0) << err_;
+
+    const Zone in = eq::load_eq_zone(test::read_bytes(input), input);
+    const Zone out = eq::load_eq_zone(test::read_bytes(o.output), o.output);
+    ASSERT_TRUE(out.baked_pvs.has_value());
+    const Pvs expected = bake_directly(build_zone_portals(in), uint32_t(in.region_count()), VisParams::Method::Full);
+    // The writer stores each row with the region's own bit set (the baker's rows already have it).
+    EXPECT_EQ(rows_of(*out.baked_pvs), rows_of(expected));
+    EXPECT_EQ(out.region_count(), in.region_count());
+}
+
+TEST_F(Bake, BadArgumentsAreRefusedWithAMessageAndNothingIsWritten)
+{
+    SHARED_DATA_OR_SKIP(input, "visdemo/example.bsp");
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("out.s3d"); // a .bsp is written back as a .bsp
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("must end in .bsp"), std::string::npos) << err_;
+    EXPECT_FALSE(fs::exists(o.output));
+
+    o.output = path("out.bsp");
+    o.method = "portal-medium";
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("--method must be portal-fast or portal-full"), std::string::npos) << err_;
+
+    o.method = "portal-full";
+    o.level = 7;
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("--level must be 0..4"), std::string::npos) << err_;
+
+    o.level = 4;
+    o.output.clear();
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("no output file"), std::string::npos) << err_;
+
+    o.output = path("out.bsp");
+    o.input = path("missing.bsp");
+    EXPECT_EQ(run(o), 1);
+    EXPECT_NE(err_.find("missing.bsp"), std::string::npos) << err_;
+
+    o.input = input; // a text file is no zone
+    const std::string text = path("notes.txt");
+    std::ofstream(text) << "hello";
+    o.input = text;
+    EXPECT_EQ(run(o), 1);
+    EXPECT_NE(err_.find("unknown file format"), std::string::npos) << err_;
+    EXPECT_FALSE(fs::exists(o.output));
+}
+
+TEST_F(Bake, AZoneWithNoPortalsIsBakedWithWarnings)
+{
+    // One region, one leaf, no node: no portal, and the leaf reaches the world box (a leak).
+    Zone zone;
+    zone.regions.resize(1);
+    zone.regions[0].bounds = {{0, 0, 0}, {64, 64, 64}};
+    zone.tree.leaf_region = {0};
+    zone.tree.root = ~0;
+    zone.tree.tie_rule = TieRule::OnPlaneGoesFront;
+    zone.region_face_offsets = {0, 0};
+    const std::string input = path("one.s3d");
+    write_zone(zone, input, ZoneOutput::S3d);
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("one-baked.s3d");
+    ASSERT_EQ(run(o), 0) << err_;
+    EXPECT_NE(err_.find("has no portals: every region will see only itself"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("leaks: 1 open leaves touch the world box"), std::string::npos) << err_;
+    const Zone out = eq::load_eq_zone(test::read_bytes(o.output), o.output);
+    ASSERT_TRUE(out.baked_pvs.has_value());
+    ASSERT_EQ(out.baked_pvs->region_count(), 1u);
+    EXPECT_TRUE(out.baked_pvs->visible(0, 0));
+}
+
+TEST_F(Bake, APortalFileOfAnotherMapIsRefused)
+{
+    SHARED_DATA_OR_SKIP(input, "visdemo/example.bsp");
+    const std::string prt = path("other.prt");
+    std::ofstream(prt) << "PRT1\n3\n1\n4 0 1 (0 0 0 ) (0 1 0 ) (0 1 1 ) (0 0 1 )\n";
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("out.bsp");
+    o.prt_in = prt;
+    EXPECT_EQ(run(o), 1);
+    EXPECT_NE(err_.find("portal file names 3 leaves"), std::string::npos) << err_;
+    EXPECT_FALSE(fs::exists(o.output));
+}
+
+TEST_F(Bake, ACancelledBakeWritesNothing)
+{
+    SHARED_DATA_OR_SKIP(input, "visdemo/example.bsp");
+    app::BakeOptions o;
+    o.input = input;
+    o.output = path("out.bsp");
+    o.report = path("report.json");
+    o.prt_out = path("out.prt");
+    const std::atomic<bool> cancel{true}; // as if Ctrl-C came before the first progress call
+    EXPECT_EQ(run(o, &cancel), 130);
+    EXPECT_NE(err_.find("cancelled: nothing was written"), std::string::npos) << err_;
+    EXPECT_FALSE(fs::exists(o.output));
+    EXPECT_FALSE(fs::exists(o.report));
+    EXPECT_FALSE(fs::exists(o.prt_out));
+}
+
+} // namespace
+} // namespace pvs
