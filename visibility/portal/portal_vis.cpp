@@ -267,6 +267,7 @@ struct SeparatorCache {
     uint32_t next_edge = 0; // edges of A tried so far
     uint32_t count = 0;
     DPlane planes[kMaxSeparators];
+    std::vector<int8_t> b_side; // sides_to_plane of B, found with the first edge
 };
 
 struct Frame {
@@ -279,7 +280,11 @@ struct Frame {
     SeparatorCache separators[2];
     Vec slots[kStackWindings][kStackPoints];
 
-    explicit Frame(size_t words) : mightsee(words, 0) {}
+    Frame(size_t words, uint32_t max_points) : mightsee(words, 0)
+    {
+        for (SeparatorCache& cache : separators)
+            cache.b_side.resize(max_points);
+    }
 };
 
 bool normals_equal(const Vec& a, const Vec& b)
@@ -288,46 +293,61 @@ bool normals_equal(const Vec& a, const Vec& b)
            std::abs(a.z - b.z) <= kEqualEpsilon;
 }
 
-// ericw's separating plane for edge i of winding A (on a_plane) and winding B: the first
-// vertex of B making a plane through the edge with B in front (none of it below -ON_EPSILON,
-// some of it above +ON_EPSILON) and A behind; `mirror` negates it (tests 1 and 3). False when
-// no vertex of B gives one.
-bool edge_separator(const WRef& a, const DPlane& a_plane, const WRef& b, uint32_t i, bool mirror, DPlane& out)
+// Which side of A's plane each point of B lies on (+1 above +ON_EPSILON, -1 below -ON_EPSILON,
+// 0 on it): edge_separator's first look at B, the same for every edge of A, so found once.
+void sides_to_plane(const WRef& b, const DPlane& a_plane, int8_t* side)
 {
-    const Vec& ai = a.points[i];
-    const Vec v1 = a.points[(i + 1) % a.count] - ai;
     for (uint32_t j = 0; j < b.count; ++j) {
-        // Which side of A is this vertex of B: that side of the new plane holds A.
-        const double side = a_plane.distance(b.points[j]);
-        bool flip;
-        if (side < -kOnEpsilon)
-            flip = true;
-        else if (side > kOnEpsilon)
-            flip = false;
-        else
+        const double d = a_plane.distance(b.points[j]);
+        side[j] = int8_t(int(d > kOnEpsilon) - int(d < -kOnEpsilon));
+    }
+}
+
+// ericw's separating plane for edge i of winding A and winding B (b_side: sides_to_plane of B
+// against A's plane): the first vertex of B making a plane through the edge with B in front
+// (none of it below -ON_EPSILON, some of it above +ON_EPSILON) and A behind; `mirror` negates
+// it (tests 1 and 3). False when no vertex of B gives one.
+// The candidates are tested with the unnormalised normal n, d = dot(n, b - b_j) / |n| compared
+// as d^2 against ON_EPSILON^2 with d's sign, so a rejected vertex costs no square root or
+// division; the plane returned is computed exactly as ericw's (normalised, then its distance).
+bool edge_separator(const WRef& a, const WRef& b, const int8_t* b_side, uint32_t i, bool mirror, DPlane& out)
+{
+    const Vec ai = a.points[i];
+    const Vec v1 = a.points[i + 1 == a.count ? 0 : i + 1] - ai;
+    const Vec* bp = b.points;
+    const uint32_t bn = b.count;
+    for (uint32_t j = 0; j < bn; ++j) {
+        if (b_side[j] == 0)
             continue; // on A's plane
-        const Vec n = glm::cross(v1, b.points[j] - ai);
-        const double len_sq = glm::dot(n, n);
+        const Vec bj = bp[j];
+        const Vec cross = glm::cross(v1, bj - ai);
+        const double len_sq = glm::dot(cross, cross);
         if (len_sq < kSeparatorMinLengthSq)
             continue; // the three points make no plane
-        DPlane sep;
-        sep.normal = n * (1.0 / std::sqrt(len_sq));
-        sep.dist = glm::dot(b.points[j], sep.normal);
-        if (flip)
-            sep = sep.flipped();
-        // All of B must be on the front side, some of it strictly.
-        uint32_t front = 0, k = 0;
-        for (; k < b.count; ++k) {
-            if (k == j)
-                continue;
-            const double d = sep.distance(b.points[k]);
-            if (d < -kOnEpsilon)
-                break;
-            if (d > kOnEpsilon)
-                ++front;
+        // The side of A that holds this vertex of B is the side of the new plane that holds B.
+        const Vec n = b_side[j] < 0 ? -cross : cross;
+        const double limit = kOnEpsilon * kOnEpsilon * len_sq;
+        // B's points from j's neighbours out: on a convex B, a vertex that is not the one the
+        // plane wants has a neighbour behind, so most candidates fail at the first look (the
+        // order does not change the outcome, every point must pass).
+        const double nj = glm::dot(n, bj);
+        bool front = false, behind = false;
+        for (uint32_t step = 1; step < bn && !behind; ++step) {
+            // j+1, j-1, j+2, j-2, ...: every other point once.
+            const uint32_t offset = (step & 1) != 0 ? (step + 1) / 2 : bn - step / 2;
+            const uint32_t k = j + offset < bn ? j + offset : j + offset - bn;
+            const double u = glm::dot(n, bp[k]) - nj;
+            const bool beyond_epsilon = u * u > limit;
+            behind = (u < 0.0) & beyond_epsilon;
+            front |= (u > 0.0) & beyond_epsilon;
         }
-        if (k != b.count || front == 0)
+        if (behind || !front)
             continue;
+        DPlane sep;
+        sep.normal = cross * (1.0 / std::sqrt(len_sq));
+        sep.dist = glm::dot(bj, sep.normal);
+        if (b_side[j] < 0)
+            sep = sep.flipped();
         out = mirror ? sep.flipped() : sep;
         return true; // the first separator of each edge only (Antony Suter's optimisation)
     }
@@ -340,7 +360,7 @@ class FlowWorker {
 public:
     FlowWorker(const Graph& g, int level)
         : g_(g), level_(level), vis_(g.words, 0), on_stack_(g.leaf_count, 0),
-          dists_(std::max(g.max_points, kStackPoints) + 1), sides_(std::max(g.max_points, kStackPoints) + 1)
+          dists_(point_capacity() + 1), sides_(point_capacity() + 1), b_side_(point_capacity())
     {
     }
 
@@ -354,15 +374,19 @@ public:
     size_t leaf_recursions() const { return leaf_recursions_; }
     size_t bytes() const
     {
-        return frames_.size() * (sizeof(Frame) + g_.words * sizeof(uint64_t)) +
-               vis_.size() * sizeof(uint64_t) + on_stack_.size() + dists_.size() * sizeof(double) + sides_.size();
+        return frames_.size() * (sizeof(Frame) + g_.words * sizeof(uint64_t) + 2 * point_capacity()) +
+               vis_.size() * sizeof(uint64_t) + on_stack_.size() + dists_.size() * sizeof(double) + sides_.size() +
+               b_side_.size();
     }
 
 private:
+    // The most points any winding of the walk can have: a portal's or a frame winding's.
+    uint32_t point_capacity() const { return std::max(g_.max_points, kStackPoints); }
+
     Frame& frame(size_t depth)
     {
         while (frames_.size() <= depth)
-            frames_.push_back(std::make_unique<Frame>(g_.words));
+            frames_.push_back(std::make_unique<Frame>(g_.words, point_capacity()));
         return *frames_[depth];
     }
 
@@ -395,6 +419,14 @@ private:
     // f's windings and a new one is returned (or none).
     WRef clip(const WRef& in, const DPlane& split, Frame& f);
 
+    // A clip whose result would not fit in a frame's winding: the slot back, the unclipped input
+    // (conservative).
+    static WRef overflowed(Frame& f, int slot, const WRef& in)
+    {
+        f.slot_used[slot] = false;
+        return in;
+    }
+
     // Enters `leaf` below the frame at depth_ (false when it is already on the chain).
     bool enter(uint32_t leaf);
 
@@ -405,6 +437,7 @@ private:
     std::vector<uint8_t> on_stack_;
     std::vector<double> dists_;
     std::vector<uint8_t> sides_;
+    std::vector<int8_t> b_side_; // tests 2 and 3: sides_to_plane of B
     size_t depth_ = 0;
     size_t leaf_recursions_ = 0;
 };
@@ -422,23 +455,33 @@ WRef FlowWorker::clip(const WRef& in, const DPlane& split, Frame& f)
     if (centre > in.radius)
         return in;
 
+    // Locals, not members: the byte stores to `sides` would otherwise make the compiler reload
+    // every pointer after each of them.
+    const Vec* points = in.points;
     const uint32_t n = in.count;
-    uint32_t counts[3] = {0, 0, 0};
+    double* dists = dists_.data();
+    uint8_t* sides = sides_.data();
+    const Vec normal = split.normal;
+    const double dist = split.dist;
+    // Branch-free: which side a point is on is data, not control flow.
+    uint32_t front = 0, back = 0;
     for (uint32_t i = 0; i < n; ++i) {
-        const double d = split.distance(in.points[i]);
-        dists_[i] = d;
-        sides_[i] = d > kOnEpsilon ? kFront : (d < -kOnEpsilon ? kBack : kOn);
-        ++counts[sides_[i]];
+        const double d = glm::dot(normal, points[i]) - dist;
+        dists[i] = d;
+        const uint32_t is_front = d > kOnEpsilon, is_back = d < -kOnEpsilon;
+        sides[i] = uint8_t(is_back + 2 * (1 - is_front - is_back)); // kFront, kBack or kOn
+        front += is_front;
+        back += is_back;
     }
-    dists_[n] = dists_[0];
-    sides_[n] = sides_[0];
-    if (counts[kOn] == n)
+    dists[n] = dists[0];
+    sides[n] = sides[0];
+    if (front == 0 && back == 0)
         return in; // lying on the plane: kept unclipped (ericw issue #261)
-    if (counts[kFront] == 0) {
+    if (front == 0) {
         release(in, f);
         return {};
     }
-    if (counts[kBack] == 0)
+    if (back == 0)
         return in;
 
     const int slot = acquire(f);
@@ -446,40 +489,31 @@ WRef FlowWorker::clip(const WRef& in, const DPlane& split, Frame& f)
         return in; // cannot happen (see acquire); unclipped is conservative
     Vec* out = f.slots[slot];
     uint32_t m = 0;
-    bool overflow = false;
-    for (uint32_t i = 0; i < n && !overflow; ++i) {
-        const Vec& p1 = in.points[i];
-        if (sides_[i] != kBack) {
-            if (m == kStackPoints) {
-                overflow = true;
-                break;
-            }
+    for (uint32_t i = 0; i < n; ++i) {
+        const Vec& p1 = points[i];
+        if (sides[i] != kBack) {
+            if (m == kStackPoints)
+                return overflowed(f, slot, in);
             out[m++] = p1;
-            if (sides_[i] == kOn)
+            if (sides[i] == kOn)
                 continue;
         }
-        if (sides_[i + 1] == kOn || sides_[i + 1] == sides_[i])
+        if (sides[i + 1] == kOn || sides[i + 1] == sides[i])
             continue;
-        const Vec& p2 = in.points[(i + 1) % n];
-        const double t = dists_[i] / (dists_[i] - dists_[i + 1]);
+        const Vec& p2 = points[i + 1 == n ? 0 : i + 1];
+        const double t = dists[i] / (dists[i] - dists[i + 1]);
         Vec mid;
         for (int j = 0; j < 3; ++j) {
-            if (split.normal[j] == 1.0)
-                mid[j] = split.dist; // axial plane: no round-off on its axis
-            else if (split.normal[j] == -1.0)
-                mid[j] = -split.dist;
+            if (normal[j] == 1.0)
+                mid[j] = dist; // axial plane: no round-off on its axis
+            else if (normal[j] == -1.0)
+                mid[j] = -dist;
             else
                 mid[j] = p1[j] + t * (p2[j] - p1[j]);
         }
-        if (m == kStackPoints) {
-            overflow = true;
-            break;
-        }
+        if (m == kStackPoints)
+            return overflowed(f, slot, in);
         out[m++] = mid;
-    }
-    if (overflow) {
-        f.slot_used[slot] = false;
-        return in; // conservative: the unclipped input
     }
     const WRef result{out, m, in.origin, in.radius, &f, slot};
     release(in, f);
@@ -592,9 +626,11 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
                 if (k == cache.count) {
                     // More planes are needed: the next edges of A (at most kMaxSeparators kept:
                     // fewer planes clip less, so the result stays conservative).
+                    if (cache.next_edge == 0)
+                        sides_to_plane(b, a_plane, cache.b_side.data());
                     bool found = false;
                     while (!found && cache.next_edge < a.count && cache.count < kMaxSeparators)
-                        found = edge_separator(a, a_plane, b, cache.next_edge++, t == 1, cache.planes[cache.count]);
+                        found = edge_separator(a, b, cache.b_side.data(), cache.next_edge++, t == 1, cache.planes[cache.count]);
                     if (!found)
                         break; // no edge left
                     ++cache.count;
@@ -606,14 +642,18 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
             continue;
         // Test 2: target -> pass separators clip the source. Test 3: pass -> target, mirrored.
         DPlane sep;
-        if (level_ > 2)
+        if (level_ > 2) {
+            sides_to_plane(prev.pass, q.plane, b_side_.data());
             for (uint32_t i = 0; i < pass.count && source; ++i)
-                if (edge_separator(pass, q.plane, prev.pass, i, false, sep))
+                if (edge_separator(pass, prev.pass, b_side_.data(), i, false, sep))
                     source = clip(source, sep, f);
-        if (level_ > 3)
+        }
+        if (level_ > 3 && source) {
+            sides_to_plane(pass, prev.portalplane, b_side_.data());
             for (uint32_t i = 0; i < prev.pass.count && source; ++i)
-                if (edge_separator(prev.pass, prev.portalplane, pass, i, true, sep))
+                if (edge_separator(prev.pass, pass, b_side_.data(), i, true, sep))
                     source = clip(source, sep, f);
+        }
         if (!source)
             continue;
 
