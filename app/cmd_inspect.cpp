@@ -4,6 +4,9 @@
 #include "ui/gui/inspector_app.h"
 
 #include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
 
 namespace pvs::app {
 
@@ -16,7 +19,40 @@ struct InspectOptions {
     std::string size = "1280x800";
     std::string camera;
     std::string cull = "pvs+frustum";
+    bool report_fps = false;
+    std::string overlays = "zonelines,frustum";
+    bool pick_centre = false;
+    int bsp_node = -1;
+    std::string bake;
 };
+
+// "membership,planes,portals,bounds,zonelines,frustum" (any subset, or "none") -> the toggles.
+std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
+{
+    ui::OverlaySettings o;
+    o.zone_lines = o.locked_frustum = false;
+    if (text == "none")
+        return o;
+    std::stringstream list(text);
+    std::string name;
+    while (std::getline(list, name, ',')) {
+        if (name == "membership")
+            o.pvs_membership = true;
+        else if (name == "planes")
+            o.split_planes = true;
+        else if (name == "portals")
+            o.portals = true;
+        else if (name == "bounds")
+            o.region_bounds = true;
+        else if (name == "zonelines")
+            o.zone_lines = true;
+        else if (name == "frustum")
+            o.locked_frustum = true;
+        else
+            return std::nullopt;
+    }
+    return o;
+}
 
 } // namespace
 
@@ -59,6 +95,24 @@ void register_inspect_command(CLI::App& app, int& exit_code)
     cmd->add_option("--cull", o->cull, "Culling stages at start")
         ->capture_default_str()
         ->check(CLI::IsMember({"none", "frustum", "pvs", "pvs+frustum"}));
+    cmd->add_flag("--report-fps", o->report_fps,
+                  "Draw --frames frames without vsync, print the frame times (mean, median, p95, fps) and exit");
+    cmd->add_option("--overlays", o->overlays,
+                    "Overlays at start: a comma list of membership, planes, portals, bounds, zonelines, frustum; "
+                    "or none")
+        ->capture_default_str()
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                return parse_overlays(text) ? std::string()
+                                            : "expects a comma list of membership, planes, portals, bounds, "
+                                              "zonelines, frustum (or none), got '" + text + "'";
+            },
+            "LIST"));
+    cmd->add_flag("--pick-centre", o->pick_centre, "Pick the face at the viewport's centre (as a click would)");
+    cmd->add_option("--bsp-node", o->bsp_node, "Select this BSP node in the BSP panel (its plane is highlighted)")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--bake", o->bake, "Bake a PVS at start (portal vis on a background thread), as the Bake panel does")
+        ->check(CLI::IsMember({"portal-fast", "portal-full"}));
     cmd->callback([o, &exit_code] {
         const auto size = parse_size_argument(o->size); // the validator accepted it
         gui::InspectorOptions options;
@@ -70,6 +124,16 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         if (!o->camera.empty())
             options.camera = parse_camera_argument(o->camera);
         options.cull_mode = parse_cull_mode(o->cull).value_or(CullMode::PvsFrustum);
+        options.report_fps = o->report_fps;
+        options.overlays = parse_overlays(o->overlays).value_or(ui::OverlaySettings{});
+        options.pick_centre = o->pick_centre;
+        options.bsp_node = o->bsp_node;
+        if (!o->bake.empty()) {
+            gui::BakeRequest request;
+            request.method = o->bake == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
+            request.threads = 1;
+            options.bake = request;
+        }
         exit_code = gui::run_inspector(options);
     });
 }

@@ -91,9 +91,19 @@ uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb)
     return set;
 }
 
+LineProjection::LineProjection(const Camera& view)
+    : to_view(view.view()), projection(view.projection()), near_distance(view.near_distance)
+{
+}
+
 uint32_t draw_line_3d(Image& image, const Camera& view, const glm::vec3& a, const glm::vec3& b, uint32_t rgb)
 {
-    const glm::mat4 to_view = view.view();
+    return draw_line_3d(image, LineProjection(view), a, b, rgb);
+}
+
+uint32_t draw_line_3d(Image& image, const LineProjection& view, const glm::vec3& a, const glm::vec3& b, uint32_t rgb)
+{
+    const glm::mat4& to_view = view.to_view;
     glm::vec4 va = to_view * glm::vec4(a, 1.0f), vb = to_view * glm::vec4(b, 1.0f);
     // View space looks down -z: depth = -z. Keep the part with depth >= near.
     const float near_plane = view.near_distance;
@@ -105,7 +115,7 @@ uint32_t draw_line_3d(Image& image, const Camera& view, const glm::vec3& a, cons
         const glm::vec4 cut = va + (vb - va) * t;
         (da < near_plane ? va : vb) = cut;
     }
-    const glm::mat4 projection = view.projection();
+    const glm::mat4& projection = view.projection;
     const float w = float(image.width), h = float(image.height);
     auto to_pixel = [&](const glm::vec4& v) {
         const glm::vec4 c = projection * v;

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -37,6 +38,15 @@ uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb);
 // plane and the image. Returns how many pixels were set: 0 when it lies entirely behind the near
 // plane or projects off the image.
 uint32_t draw_line_3d(Image& image, const Camera& view, const glm::vec3& a, const glm::vec3& b, uint32_t rgb);
+
+// The same with the camera's matrices computed once by the caller (view.view(), view.projection()
+// and its near distance): for drawing many segments from one camera.
+struct LineProjection {
+    glm::mat4 to_view, projection;
+    float near_distance;
+    explicit LineProjection(const Camera& view);
+};
+uint32_t draw_line_3d(Image& image, const LineProjection& view, const glm::vec3& a, const glm::vec3& b, uint32_t rgb);
 
 // The corners of `camera`'s view volume: the near rectangle then the far one, each bottom-left,
 // bottom-right, top-right, top-left as that camera sees them. The same volume as

@@ -60,20 +60,22 @@ TEST_F(NullBackend, EveryPanelDraws)
             gui::draw_zone_panel(state, panels.zone);
             gui::draw_culling_panel(state, panels.culling);
             gui::draw_region_panel(state, panels.region);
+            gui::draw_bsp_panel(state, panels.bsp);
+            gui::draw_bake_panel(state, panels.bake);
         });
         ASSERT_NE(data, nullptr);
         EXPECT_TRUE(data->Valid);
         if (i == 2) {
-            EXPECT_GT(data->TotalVtxCount, 1000); // text and widgets of four panels
-            EXPECT_EQ(data->CmdListsCount, 4);
+            EXPECT_GT(data->TotalVtxCount, 1000); // text and widgets of six panels
+            EXPECT_GE(data->CmdListsCount, 6);     // and their lists' child windows
         }
     }
-    for (const char* name : {"Viewport", "Zone", "Culling", "Region"})
+    for (const char* name : {"Viewport", "Zone", "Culling", "Region", "BSP", "Bake"})
         EXPECT_NE(ImGui::FindWindowByName(name), nullptr) << name;
     EXPECT_EQ(state.totals().frames, 3u); // the viewport rendered once per frame
     EXPECT_EQ(uploads, 3);
     EXPECT_EQ(last_upload.first, state.image().width);
-    EXPECT_GE(panels.region.row_region, -1);
+    EXPECT_GE(panels.region.lists_region, -1);
 }
 
 TEST_F(NullBackend, ViewportRendersAtItsSizeAndTakesKeys)
@@ -119,13 +121,29 @@ TEST_F(NullBackend, ClickInTheViewportPicks)
     EXPECT_EQ(state.shown_region(), state.selection().region);
 }
 
-TEST_F(NullBackend, RegionPanelListsTheRowOfAZoneWithAPvs)
+TEST_F(NullBackend, RegionPanelListsTheRowAndColumnOfTheActivePvs)
 {
-    // The demo zone has no PVS: the panel says so and lists nothing.
     for (int i = 0; i < 2; ++i)
         frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    const int32_t region = state.shown_region();
+    ASSERT_GE(region, 0);
+    EXPECT_EQ(panels.region.lists_region, region);
+    // Independently: the row and column by Pvs::visible, one pair at a time.
+    std::vector<uint32_t> row, column;
+    if (const Pvs* pvs = state.active_pvs())
+        for (uint32_t r = 0; r < pvs->region_count(); ++r) {
+            if (pvs->visible(uint32_t(region), r))
+                row.push_back(r);
+            if (pvs->visible(r, uint32_t(region)))
+                column.push_back(r);
+        }
+    EXPECT_EQ(panels.region.row, row);
+    EXPECT_EQ(panels.region.column, column);
+    // With no PVS source the panel lists nothing.
+    ASSERT_TRUE(state.set_pvs_source(gui::PvsSource::None));
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
     EXPECT_TRUE(panels.region.row.empty());
-    EXPECT_EQ(panels.region.row_region, state.shown_region());
+    EXPECT_TRUE(panels.region.column.empty());
 }
 
 } // namespace

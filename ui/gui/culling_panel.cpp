@@ -89,6 +89,19 @@ void draw_switches(InspectorState& state)
             if (ImGui::RadioButton(name, state.render_mode == *mode))
                 state.render_mode = *mode;
         }
+    ImGui::TextDisabled("PVS source");
+    first = true;
+    for (PvsSource source : {PvsSource::File, PvsSource::None, PvsSource::Baked}) {
+        if (!std::exchange(first, false))
+            ImGui::SameLine();
+        const bool available = state.has_pvs_source(source);
+        if (!available)
+            ImGui::BeginDisabled();
+        if (ImGui::RadioButton(pvs_source_name(source), state.pvs_source() == source))
+            state.set_pvs_source(source);
+        if (!available)
+            ImGui::EndDisabled();
+    }
     bool locked = state.locked();
     if (ImGui::Checkbox("Lock culling camera", &locked))
         state.set_lock(locked);
@@ -124,8 +137,22 @@ void draw_culling_panel(InspectorState& state, CullingPanel& panel)
         ImGui::Text("camera %.0f %.0f %.0f  yaw %.0f  pitch %.0f", double(c.position.x), double(c.position.y),
                     double(c.position.z), double(c.yaw_degrees), double(c.pitch_degrees));
         ImGui::Text("speed %.0f u/s (wheel; shift x%.0f)", double(state.move_speed()), double(kFastFactor));
+        float fov = c.fov_y_degrees;
+        if (ImGui::SliderFloat("field of view", &fov, kMinFovDegrees, kMaxFovDegrees, "%.0f deg"))
+            state.set_fov(fov);
         if (ImGui::Button("Reset camera"))
             state.reset_camera();
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(80.0f);
+        ImGui::InputInt("##goto", &panel.go_to_region, 0);
+        ImGui::SameLine();
+        if (ImGui::Button("Go to region") && panel.go_to_region >= 0)
+            state.go_to_region(uint32_t(panel.go_to_region));
+        if (const auto& target = state.orbit_target())
+            ImGui::TextDisabled("orbit about %.0f %.0f %.0f (middle drag)", double(target->x), double(target->y),
+                                double(target->z));
+        else
+            ImGui::TextDisabled("pick a face, then middle-drag to orbit about it");
     }
     ImGui::End();
 }

@@ -14,10 +14,14 @@
 #include <stb_image_write.h> // Debian's libstb, which ImGui links already
 
 #include <algorithm>
+#include <array>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace pvs::gui {
@@ -64,7 +68,7 @@ bool open_platform(Platform& platform, const InspectorOptions& options)
     if (!platform.window)
         return false;
     glfwMakeContextCurrent(platform.window);
-    glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
+    glfwSwapInterval(options.screenshot.empty() && !options.report_fps ? 1 : 0);
     glfwSetWindowUserPointer(platform.window, &platform);
     glfwSetDropCallback(platform.window, on_drop);
 
@@ -128,19 +132,69 @@ bool save_window_png(GLFWwindow* window, const std::string& path)
     return stbi_write_png(path.c_str(), width, height, 3, top_down.data(), int(row)) != 0;
 }
 
+// Whole-frame wall times of a --report-fps run, and the summary it prints.
+struct FrameTimer {
+    std::vector<double> frame_ms, render_ms, cull_us;
+    std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+
+    void lap(const InspectorState& state)
+    {
+        const auto now = std::chrono::steady_clock::now();
+        frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
+        last = now;
+        render_ms.push_back(state.last_render().draw_ms);
+        const CullStats& c = state.last_cull();
+        cull_us.push_back(c.lookup_us + c.pvs_us + c.frustum_us);
+    }
+    void print(const InspectorState& state) const
+    {
+        // The first frames size the windows and build the scene: left out.
+        const size_t skip = std::min<size_t>(frame_ms.size() / 10 + 1, 10);
+        if (frame_ms.size() <= skip)
+            return;
+        auto stats = [skip](std::vector<double> v) {
+            v.erase(v.begin(), v.begin() + long(skip));
+            std::sort(v.begin(), v.end());
+            double sum = 0;
+            for (double x : v)
+                sum += x;
+            return std::array<double, 3>{sum / double(v.size()), v[v.size() / 2], v[v.size() * 95 / 100]};
+        };
+        const auto f = stats(frame_ms), r = stats(render_ms), c = stats(cull_us);
+        std::printf("pvscope: %zu frames timed (%zu warm-up left out), viewport %ux%u, cull %s\n"
+                    "  frame  mean %.2f ms (%.1f fps), median %.2f ms, p95 %.2f ms\n"
+                    "  render mean %.2f ms, median %.2f ms; cull mean %.1f us; %u of %u regions drawn (last frame)\n",
+                    frame_ms.size() - skip, skip, state.image().width, state.image().height,
+                    cull_mode_name(state.cull_mode), f[0], 1000.0 / f[0], f[1], f[2], r[0], r[1], c[0],
+                    state.last_cull().regions_after_frustum, state.last_cull().regions_total);
+    }
+};
+
 int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& options)
 {
+    FrameTimer timer;
     ViewportTexture texture;
     InspectorPanels panels;
     panels.viewport.upload = [&texture](const ui::Image& image) { return texture.upload(image); };
     panels.zone.open_path = options.zone_path;
+    if (options.bake)
+        panels.bake.request = *options.bake;
+    // Scripted runs (screenshots, timings) leave the user's recent files alone.
+    if (options.screenshot.empty()) {
+        panels.file.recent = RecentFiles(default_recent_files_path());
+        panels.file.recent.load();
+        std::error_code error;
+        const std::filesystem::path absolute = std::filesystem::absolute(options.zone_path, error);
+        if (!options.zone_path.empty() && !error)
+            panels.file.recent.add(absolute.lexically_normal().string());
+    }
     int frames = 0;
     uint64_t titled_zone = 0;
     while (!glfwWindowShouldClose(platform.window)) {
         glfwPollEvents();
         for (const std::string& path : platform.dropped) {
             panels.zone.open_path = path;
-            state.open_zone(path);
+            open_zone_file(state, panels.file, path);
         }
         platform.dropped.clear();
         if (state.has_zone() && state.zone_generation() != titled_zone) {
@@ -152,7 +206,8 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         ImGui_ImplGlfw_NewFrame();
         ImGui::NewFrame();
         // Scripted frames get a fixed time step, so a screenshot does not depend on the machine.
-        draw_inspector(state, panels, options.screenshot.empty() ? ImGui::GetIO().DeltaTime : 1.0f / 30.0f);
+        const bool scripted = !options.screenshot.empty() || options.report_fps;
+        draw_inspector(state, panels, scripted ? 1.0f / 30.0f : ImGui::GetIO().DeltaTime);
         ImGui::Render();
 
         int width = 0, height = 0;
@@ -162,6 +217,24 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
+        if (scripted && state.bake_job().status() == BakeStatus::Running && frames == 0) {
+            glfwSwapBuffers(platform.window);
+            continue; // a scripted bake: the timed or screenshot frames start once it is done
+        }
+        if (options.pick_centre && frames == 1)
+            state.pick(state.image().width / 2, state.image().height / 2);
+        if (options.report_fps) {
+            glfwSwapBuffers(platform.window);
+            glFinish();
+            timer.lap(state);
+            if (++frames >= options.frames) {
+                timer.print(state);
+                if (!options.screenshot.empty() && !save_window_png(platform.window, options.screenshot))
+                    return 1;
+                return 0;
+            }
+            continue;
+        }
         if (!options.screenshot.empty() && ++frames >= options.frames) {
             if (!save_window_png(platform.window, options.screenshot)) {
                 std::fprintf(stderr, "pvscope: error: cannot write %s\n", options.screenshot.c_str());
@@ -187,6 +260,11 @@ int run_inspector(const InspectorOptions& options)
         return 1;
     }
     state.cull_mode = options.cull_mode;
+    state.overlays = options.overlays;
+    if (options.bake)
+        state.start_bake(*options.bake);
+    if (options.bsp_node >= 0 && size_t(options.bsp_node) < state.zone().tree.nodes.size())
+        state.selected_node = options.bsp_node;
     if (options.camera) {
         const auto& [x, y, z, yaw, pitch] = *options.camera;
         Camera& view = state.view_camera();

@@ -6,6 +6,8 @@
 //   -> (screenshot) -> swap
 #pragma once
 
+#include "ui/gui/bake_job.h"
+#include "ui/zone_overlays.h"
 #include "visibility/culler.h"
 
 #include <array>
@@ -24,6 +26,14 @@ struct InspectorOptions {
     // to this PNG and return, without waiting for the user. For tests and the README.
     std::string screenshot;
     int frames = 5;
+    // When set: draw `frames` frames as fast as they go (no vsync), print the frame times
+    // (whole frames: cull, render, upload, ImGui, swap) and return. For docs/performance.md.
+    bool report_fps = false;
+    ui::OverlaySettings overlays;
+    bool pick_centre = false; // pick the face at the viewport's centre on the first frame
+    int32_t bsp_node = -1;    // the BSP panel's selected node at start (-1: none)
+    // Start a bake at launch; scripted runs count their frames only once it has finished.
+    std::optional<BakeRequest> bake;
 };
 
 // Opens the window and runs until it is closed or the screenshot is written. Returns the

@@ -1,7 +1,8 @@
 #include "ui/gui/inspector_state.h"
 
+#include "ui/gui/camera_math.h"
 #include "visibility/region_lookup.h"
-#include "wld/gen/generate_zone.h"
+#include "wld/gen/demo_zone.h"
 #include "wld/zone_file.h"
 
 #include <algorithm>
@@ -116,13 +117,15 @@ bool InspectorState::open_zone(const std::string& path)
 void InspectorState::open_demo()
 {
     const auto start = std::chrono::steady_clock::now();
-    auto zone = std::make_unique<Zone>(gen::generate_zone(gen::demo_zone_params()));
+    auto zone = std::make_unique<Zone>(gen::demo_zone()); // made once, then read from the cache
     adopt_zone(std::move(zone), ms_since(start));
 }
 
 void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
 {
-    // The culler and the renderer's scene borrow the old zone: drop them before it goes.
+    // The bake, the culler and the renderer's scene borrow the old zone: stop and drop them
+    // before it goes.
+    bake_.stop();
     culler_.reset();
     if (renderer_)
         renderer_->forget_zone();
@@ -132,7 +135,14 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     error_.clear();
     zone_stats_ = compute_zone_stats(*zone_);
     build_face_regions(*zone_, face_region_offsets_, face_regions_);
-    culler_ = std::make_unique<Culler>(*zone_, zone_->baked_pvs ? &*zone_->baked_pvs : nullptr);
+    baked_pvs_.reset();
+    baked_report_ = {};
+    node_polygons_.reset();
+    built_portals_.reset();
+    selected_node = -1;
+    orbit_target_.reset();
+    pvs_source_ = zone_->baked_pvs ? PvsSource::File : PvsSource::None;
+    rebuild_culler();
 
     image_ = {};
     visible_.clear();
@@ -252,15 +262,19 @@ const CullStats& InspectorState::frame()
     if (!locked_)
         cull_ = view_;
 
+    poll_bake();
     last_cull_ = culler_->cull(cull_, {cull_mode, true}, visible_);
+    update_after_pvs();
     try {
         ensure_renderer();
         image_ = renderer_->render(*zone_, view_, visible_, render_mode);
         last_render_ = renderer_->last_stats();
+        paint_overlays();
     } catch (const std::exception& e) { // no renderer, or an ID render of a zone too large to encode
         error_ = e.what();
         image_ = {};
         last_render_ = {};
+        labels_.clear();
     }
     ++frame_number_;
 
@@ -302,6 +316,7 @@ std::optional<Selection> InspectorState::pick(uint32_t x, uint32_t y)
     if (face == ui::kNoFace)
         return std::nullopt;
     selection_.face = face;
+    selection_.point = pixel_point(*zone_, view_, image_.width, image_.height, x, y);
     const auto regions = regions_of_face(face);
     selection_.face_regions.assign(regions.begin(), regions.end());
     // The region that drew it: the first visible one (ascending), as RegionColors colours it.

@@ -14,18 +14,29 @@
 // then exactly those of culling from the locked camera alone. Unlocking snaps the culling camera
 // back onto the view camera.
 //
-// Not thread-safe; owns one SoftwareRenderer (see its header for what creating one does).
+// frame() also polls the background bake (BakeJob: its finished PVS becomes the "baked" PVS
+// source), records the culling camera's path down the tree, and paints the enabled overlays
+// (ui/zone_overlays.h) over the picture. The culler's PVS is the zone file's, none, or the bake
+// (set_pvs_source).
+//
+// Not thread-safe (the bake's worker thread touches only the zone, read-only, and its own job
+// state); owns one SoftwareRenderer (see its header for what creating one does).
 #pragma once
 
+#include "ui/gui/bake_job.h"
 #include "ui/gui/frame_history.h"
 #include "ui/software_renderer.h"
+#include "ui/zone_overlays.h"
 #include "visibility/camera.h"
 #include "visibility/culler.h"
+#include "visibility/geometry/winding.h"
+#include "visibility/region_lookup.h"
 #include "visibility/zone.h"
 #include "visibility/zone_stats.h"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <span>
@@ -54,7 +65,16 @@ struct Selection {
     uint32_t face = ui::kNoFace;
     std::vector<uint32_t> face_regions; // ascending
     int32_t region = -1;                // the selected region: a visible one of face_regions, or -1
+    std::optional<glm::vec3> point;     // where the ray through the picked pixel hits the face
 };
+
+// Where the culler's PVS comes from: the zone file's, none (frustum only), or a bake made in
+// the inspector (BakeJob).
+enum class PvsSource : uint8_t { File, None, Baked };
+const char* pvs_source_name(PvsSource source);
+
+inline constexpr float kMinFovDegrees = 20.0f, kMaxFovDegrees = 140.0f;
+inline constexpr float kOrbitDegreesPerPixel = 0.3f;
 
 class InspectorState {
 public:
@@ -96,6 +116,16 @@ public:
     void reset_camera();
     // Moves the view camera to the centre of a region's bounds (direction kept).
     void go_to_region(uint32_t region);
+    // Vertical field of view of both cameras (the culling camera's only while unlocked), clamped
+    // to [kMinFovDegrees, kMaxFovDegrees].
+    void set_fov(float degrees);
+    // Orbit: the view camera turns about `target` at its current distance, always looking at it.
+    // set_orbit_target aims the camera at the target (position kept); orbit() adds yaw and pitch
+    // (pitch clamped to +-kMaxPitchDegrees) and puts the camera back at the same distance.
+    // Without a target orbit() does nothing. Opening a zone clears the target.
+    void set_orbit_target(std::optional<glm::vec3> target);
+    const std::optional<glm::vec3>& orbit_target() const { return orbit_target_; }
+    void orbit(float yaw_degrees, float pitch_degrees);
 
     // ---- Frame ---------------------------------------------------------------------------------
     CullMode cull_mode = CullMode::PvsFrustum;
@@ -116,6 +146,41 @@ public:
     uint64_t frame_number() const { return frame_number_; }
     const FrameHistory& history() const { return history_; }
     const CullTotals& totals() const { return totals_; }
+    // Regions the PVS stage kept this frame (every region when it did not run), ascending.
+    const std::vector<uint32_t>& after_pvs_regions() const { return after_pvs_; }
+
+    // ---- Overlays (ui/zone_overlays.h), painted by frame() except in IdBuffer mode ---------------
+    ui::OverlaySettings overlays;
+    const std::vector<ui::OverlayLabel>& overlay_labels() const { return labels_; }
+    // The culling camera's walk down the tree this frame, root first (trace_point).
+    const std::vector<PathStep>& camera_path() const { return path_; }
+    // The BSP panel's node (-1: none): its plane is the highlighted one.
+    int32_t selected_node = -1;
+    // Every node's split plane clipped to its cell (computed on first use per zone).
+    const std::vector<Winding>& node_polygons();
+    // The zone's portals: its own, else built from its tree on first use (empty set when the
+    // tree gives none).
+    const PortalSet& portals();
+    bool portals_ready() const { return zone_ && (zone_->portals || built_portals_); }
+    // Regions whose leaves are under `node` (a node index), ascending.
+    std::vector<uint32_t> regions_under(int32_t node) const;
+
+    // ---- PVS source and bake -----------------------------------------------------------------------
+    PvsSource pvs_source() const { return pvs_source_; }
+    bool has_pvs_source(PvsSource source) const;
+    // Switches the culler's PVS; false (nothing changes) when that source is not available.
+    bool set_pvs_source(PvsSource source);
+    const Pvs* active_pvs() const;
+    // Changes whenever the active PVS or the baked one changes: panels key their lists on it.
+    uint64_t pvs_generation() const { return pvs_generation_; }
+    BakeJob& bake_job() { return bake_; }
+    const BakeJob& bake_job() const { return bake_; }
+    bool start_bake(const BakeRequest& request);
+    // Takes a finished bake's PVS (called by frame(); tests call it directly). When it is the
+    // culler's source already, the culler switches to the new one.
+    void poll_bake();
+    const std::optional<Pvs>& baked_pvs() const { return baked_pvs_; }
+    const VisReport& baked_report() const { return baked_report_; }
 
     // ---- Selection -----------------------------------------------------------------------------
     // Picks the face under pixel (x, y) of the last frame's picture (an ID render of the same
@@ -138,6 +203,9 @@ public:
 private:
     void adopt_zone(std::unique_ptr<Zone> zone, double load_ms);
     void ensure_renderer();
+    void rebuild_culler();
+    void paint_overlays();
+    void update_after_pvs();
 
     std::unique_ptr<Zone> zone_;
     std::unique_ptr<Culler> culler_;
@@ -162,6 +230,20 @@ private:
     CullTotals totals_;
 
     Selection selection_;
+    std::optional<glm::vec3> orbit_target_;
+
+    std::vector<uint32_t> after_pvs_;
+    std::vector<ui::OverlayLabel> labels_;
+    std::vector<PathStep> path_;
+    std::vector<uint32_t> path_nodes_;
+    std::optional<std::vector<Winding>> node_polygons_;
+    std::optional<PortalSet> built_portals_;
+
+    PvsSource pvs_source_ = PvsSource::None;
+    std::optional<Pvs> baked_pvs_;
+    VisReport baked_report_;
+    uint64_t pvs_generation_ = 0;
+    BakeJob bake_; // last: destroyed (stopped) first, before the zone it reads
 };
 
 } // namespace pvs::gui

@@ -6,7 +6,9 @@
 // context with fonts built and io.DisplaySize set, no GPU), which the tests do.
 #pragma once
 
+#include "ui/gui/file_browser.h"
 #include "ui/gui/inspector_state.h"
+#include "ui/gui/recent_files.h"
 
 #include <imgui.h>
 
@@ -29,7 +31,8 @@ struct ViewportPanel {
     std::function<ImTextureID(const ui::Image&)> upload;
     ImTextureID texture{};
     uint64_t uploaded_frame = 0;
-    bool looking = false; // right button went down over the picture and is still held
+    bool looking = false;  // right button went down over the picture and is still held
+    bool orbiting = false; // middle button went down over the picture on a picked point
 };
 void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_seconds);
 
@@ -44,18 +47,71 @@ void draw_zone_panel(InspectorState& state, ZonePanel& panel);
 // ---- Culling: stage counts and times, history plots, mode switches, lock ------------------------
 struct CullingPanel {
     std::vector<float> plot_values; // scratch for the plots, reused
+    int go_to_region = 0;           // the "go to region" field
 };
 void draw_culling_panel(InspectorState& state, CullingPanel& panel);
 
 // ---- Region: the selected or current region, its faces and PVS row ------------------------------
 struct RegionPanel {
-    uint64_t row_zone = 0;         // the zone (InspectorState::zone_generation) and region
-    int32_t row_region = -1;       // whose PVS row `row` holds
-    bool row_missing = false;      // that row was missing in the file (all visible)
-    std::vector<uint32_t> row;     // visible region ids, ascending
-    std::vector<uint64_t> words;   // decode scratch
+    // The lists below are for this zone (InspectorState::zone_generation), PVS
+    // (pvs_generation) and region; recomputed when one changes.
+    uint64_t lists_zone = 0, lists_pvs = 0;
+    int32_t lists_region = -1;
+    bool lists_neighbours = false; // neighbours were computed (portals were ready)
+    bool row_missing = false;      // the region's row was missing in the file (all visible)
+    std::vector<uint32_t> row;     // regions it sees, ascending
+    std::vector<uint32_t> column;  // regions that see it, ascending
+    std::vector<uint32_t> neighbours; // regions sharing a portal with it
 };
 void draw_region_panel(InspectorState& state, RegionPanel& panel);
+
+// ---- BSP: the camera's path through the tree, a node browser, the regions under a node ----------
+struct BspPanel {
+    uint64_t parents_zone = 0;       // the zone parents/depths are for
+    std::vector<int32_t> parents;    // per node: its parent node, -1 for the root or unreached
+    std::vector<int32_t> depths;     // per node: its depth, -1 when unreached
+    uint64_t regions_zone = 0;       // the zone and node `regions` is for
+    int32_t regions_node = -1;
+    std::vector<uint32_t> regions;   // regions under regions_node, ascending
+};
+void draw_bsp_panel(InspectorState& state, BspPanel& panel);
+
+// ---- Bake: portal vis on a background thread, its progress, and the diff with the file's PVS ---
+struct BakePanel {
+    BakeRequest request;
+    // The diff (file PVS vs baked) of one region, and zone-wide counts, for this PVS generation.
+    uint64_t diff_pvs = 0;
+    int32_t diff_region = -1;
+    std::vector<uint32_t> only_file, only_baked;
+    uint64_t total_only_file = 0, total_only_baked = 0; // set bits over all rows
+};
+void draw_bake_panel(InspectorState& state, BakePanel& panel);
+
+// ---- File menu (main menu bar): open through a file browser, recent files, the viewport PNG ---
+// Load errors open a modal that names the file and the problem; nothing here throws.
+struct FileMenu {
+    RecentFiles recent;                  // the application gives it its store and loads it
+    bool browser_open = false;           // the Open dialog is showing
+    bool browser_all_files = false;      // list every file, not only zone files
+    std::string browser_field;           // the directory field
+    DirectoryListing listing;            // the directory shown
+    std::string chosen;                  // the file clicked in the listing
+    std::string error;                   // a load error, shown in a modal until dismissed
+    bool error_pending = false;          // the modal is to be opened this frame
+    bool png_open = false;               // the "Save viewport PNG" dialog is showing
+    std::string png_path = "pvscope-viewport.png";
+    std::string png_message;             // the last save's result
+};
+// Opens a zone the way the menu, the browser and drag-and-drop do: on success the file goes to
+// the recent files, on failure the error modal shows state.error().
+bool open_zone_file(InspectorState& state, FileMenu& menu, const std::string& path);
+// Shows `directory` in the browser (its listing, or the error in the dialog).
+void browse_to(FileMenu& menu, const std::filesystem::path& directory);
+// The main menu bar. Returns its height.
+float draw_file_menu(InspectorState& state, FileMenu& menu);
+// The dialogs it opens and the error modal. Call after every other window: ImGui 1.86 asserts
+// when a window is created after a modal popup in the same frame (ocornut/imgui#4920).
+void draw_file_dialogs(InspectorState& state, FileMenu& menu);
 
 // ---- The whole window ----------------------------------------------------------------------------
 // Tiles the panels over the display (zone and region on the left, culling on the right, the
@@ -66,6 +122,9 @@ struct InspectorPanels {
     ZonePanel zone;
     CullingPanel culling;
     RegionPanel region;
+    BspPanel bsp;
+    BakePanel bake;
+    FileMenu file;
     ImVec2 laid_out_for{0.0f, 0.0f}; // the display size of the last tiling
 };
 void draw_inspector(InspectorState& state, InspectorPanels& panels, float dt_seconds);

@@ -1,33 +1,38 @@
-// The region panel: the picked region (or the camera's), its bounds, flags, faces, and its PVS
-// row as a clipped list; a row entry selects that region.
+// The region panel: the picked region (or the camera's), its bounds, flags, faces, and three
+// clickable lists: its PVS row (the regions it sees), its column ("visible from": the regions
+// that see it), both from the culler's current PVS source, and its neighbours through portals.
+// Clicking an entry selects that region and moves the camera into it.
 #include "ui/gui/panels.h"
 
-#include <bit>
+#include "ui/gui/pvs_rows.h"
+
 #include <string>
 
 namespace pvs::gui {
 
 namespace {
 
-// Decodes `region`'s PVS row into panel.row, once per region.
-void update_row(const InspectorState& state, int32_t region, RegionPanel& panel)
+void update_lists(InspectorState& state, int32_t region, RegionPanel& panel)
 {
-    if (panel.row_zone == state.zone_generation() && panel.row_region == region)
+    const bool neighbours_ready = state.portals_ready();
+    if (panel.lists_zone == state.zone_generation() && panel.lists_pvs == state.pvs_generation() &&
+        panel.lists_region == region && panel.lists_neighbours == neighbours_ready)
         return;
-    const Zone& zone = state.zone();
-    panel.row_zone = state.zone_generation();
-    panel.row_region = region;
+    panel.lists_zone = state.zone_generation();
+    panel.lists_pvs = state.pvs_generation();
+    panel.lists_region = region;
+    panel.lists_neighbours = neighbours_ready;
     panel.row.clear();
+    panel.column.clear();
+    panel.neighbours.clear();
     panel.row_missing = false;
-    if (!zone.baked_pvs || region < 0 || uint32_t(region) >= zone.baked_pvs->region_count())
-        return;
-    const Pvs& pvs = *zone.baked_pvs;
-    panel.row_missing = pvs.row_missing(uint32_t(region));
-    panel.words.assign(pvs.words_per_row(), 0);
-    pvs.decode_row(uint32_t(region), panel.words);
-    for (size_t w = 0; w < panel.words.size(); ++w)
-        for (uint64_t bits = panel.words[w]; bits; bits &= bits - 1)
-            panel.row.push_back(uint32_t(w * 64 + size_t(std::countr_zero(bits))));
+    if (const Pvs* pvs = state.active_pvs(); pvs && region >= 0 && uint32_t(region) < pvs->region_count()) {
+        panel.row_missing = pvs->row_missing(uint32_t(region));
+        panel.row = pvs_row_regions(*pvs, uint32_t(region));
+        panel.column = pvs_column_regions(*pvs, uint32_t(region));
+    }
+    if (neighbours_ready)
+        panel.neighbours = portal_neighbours(state.portals(), uint32_t(region));
 }
 
 std::string flag_names(uint32_t flags)
@@ -39,27 +44,48 @@ std::string flag_names(uint32_t flags)
     return names.empty() ? "none" : names;
 }
 
-void draw_row_list(InspectorState& state, RegionPanel& panel)
+// A clipped list of region ids; a click selects the region and goes there.
+void draw_region_list(InspectorState& state, const char* id, const std::vector<uint32_t>& regions, float height)
 {
-    if (!state.zone().baked_pvs) {
-        ImGui::TextDisabled("no PVS in this zone");
-        return;
-    }
-    ImGui::Text("PVS row: %zu visible%s", panel.row.size(), panel.row_missing ? " (row missing: all visible)" : "");
-    if (!ImGui::BeginChild("pvs_row", {0.0f, 0.0f}, true)) {
+    if (!ImGui::BeginChild(id, {0.0f, height}, true)) {
         ImGui::EndChild();
         return;
     }
     ImGuiListClipper clipper;
-    clipper.Begin(int(panel.row.size()));
+    clipper.Begin(int(regions.size()));
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
-            const uint32_t r = panel.row[size_t(i)];
-            const std::string label = "region " + std::to_string(r);
-            if (ImGui::Selectable(label.c_str(), int32_t(r) == state.selection().region))
+            const uint32_t r = regions[size_t(i)];
+            const std::string label = "region " + std::to_string(r) + "##" + id;
+            if (ImGui::Selectable(label.c_str(), int32_t(r) == state.selection().region)) {
                 state.select_region(int32_t(r));
+                state.go_to_region(r);
+            }
         }
     ImGui::EndChild();
+}
+
+void draw_lists(InspectorState& state, RegionPanel& panel)
+{
+    const float list_height = std::max(60.0f, (ImGui::GetContentRegionAvail().y - 90.0f) / 3.0f);
+    if (!state.active_pvs()) {
+        ImGui::TextDisabled("no PVS source (Culling panel): no row or column");
+    } else {
+        ImGui::Text("sees %zu (PVS row, %s)%s", panel.row.size(), pvs_source_name(state.pvs_source()),
+                    panel.row_missing ? ": row missing, all visible" : "");
+        draw_region_list(state, "row", panel.row, list_height);
+        ImGui::Text("visible from %zu (PVS column)", panel.column.size());
+        draw_region_list(state, "column", panel.column, list_height);
+    }
+    if (!panel.lists_neighbours) {
+        ImGui::TextDisabled("neighbours through portals:");
+        ImGui::SameLine();
+        if (ImGui::SmallButton("build portals"))
+            state.portals();
+        return;
+    }
+    ImGui::Text("%zu neighbours through portals", panel.neighbours.size());
+    draw_region_list(state, "neighbours", panel.neighbours, list_height);
 }
 
 } // namespace
@@ -99,8 +125,8 @@ void draw_region_panel(InspectorState& state, RegionPanel& panel)
         ImGui::Text("zone line to %s", zone.zone_lines[size_t(info.zone_line)].target.c_str());
     ImGui::Text("%zu faces, %llu triangles", zone.faces_of_region(uint32_t(region)).size(),
                 static_cast<unsigned long long>(state.region_triangles(uint32_t(region))));
-    update_row(state, region, panel);
-    draw_row_list(state, panel);
+    update_lists(state, region, panel);
+    draw_lists(state, panel);
     ImGui::End();
 }
 

@@ -1,8 +1,10 @@
-// The viewport: re-renders at the window's size every frame and shows the picture 1:1.
+// The viewport: re-renders at the window's size every frame and shows the picture 1:1, with
+// the overlay toggles in its menu bar, the overlays' legend and labels drawn over the picture.
 #include "ui/gui/panels.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 
 namespace pvs::gui {
 
@@ -39,13 +41,92 @@ void draw_overlay(const InspectorState& state, ImVec2 origin)
     draw->AddText(at, IM_COL32(255, 255, 255, 255), text);
 }
 
+ImU32 to_imgui(uint32_t rgb, uint8_t alpha = 255)
+{
+    return IM_COL32(uint8_t(rgb >> 16), uint8_t(rgb >> 8), uint8_t(rgb), alpha);
+}
+
+void draw_overlay_menu(InspectorState& state)
+{
+    if (!ImGui::BeginMenuBar())
+        return;
+    if (ImGui::BeginMenu("Overlays")) {
+        ui::OverlaySettings& o = state.overlays;
+        ImGui::MenuItem("PVS membership (region boxes)", nullptr, &o.pvs_membership);
+        ImGui::MenuItem("BSP split planes on the camera path", nullptr, &o.split_planes);
+        ImGui::MenuItem("Portals", nullptr, &o.portals);
+        ImGui::MenuItem("Region bounds", nullptr, &o.region_bounds);
+        ImGui::MenuItem("Zone lines", nullptr, &o.zone_lines);
+        ImGui::MenuItem("Locked culling frustum", nullptr, &o.locked_frustum);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Draw")) {
+        for (ui::RenderMode mode : ui::kRenderModes)
+            if (ImGui::MenuItem(ui::render_mode_name(mode), nullptr, state.render_mode == mode))
+                state.render_mode = mode;
+        ImGui::EndMenu();
+    }
+    ImGui::EndMenuBar();
+}
+
+// The legend, bottom left of the picture, always: the enabled overlays' colours, or a hint.
+void draw_legend(const InspectorState& state, ImVec2 origin, ImVec2 size)
+{
+    const std::vector<ui::LegendEntry> legend = ui::overlay_legend(state.overlays);
+    const float line = ImGui::GetTextLineHeight() + 2.0f, swatch = ImGui::GetTextLineHeight() - 2.0f;
+    float width = ImGui::CalcTextSize("no overlays (Overlays menu)").x;
+    for (const ui::LegendEntry& e : legend)
+        width = std::max(width, swatch + 6.0f + ImGui::CalcTextSize(e.name).x);
+    const float height = line * float(std::max<size_t>(legend.size(), 1)) + 4.0f;
+    ImVec2 at{origin.x + 6.0f, origin.y + size.y - height - 6.0f};
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled({at.x - 4.0f, at.y - 2.0f}, {at.x + width + 4.0f, at.y + height}, IM_COL32(0, 0, 0, 170));
+    if (legend.empty())
+        draw->AddText(at, IM_COL32(200, 200, 200, 255), "no overlays (Overlays menu)");
+    for (const ui::LegendEntry& e : legend) {
+        draw->AddRectFilled({at.x, at.y + 2.0f}, {at.x + swatch, at.y + 2.0f + swatch}, to_imgui(e.rgb));
+        draw->AddText({at.x + swatch + 6.0f, at.y}, IM_COL32(255, 255, 255, 255), e.name);
+        at.y += line;
+    }
+}
+
+void draw_labels(const InspectorState& state, ImVec2 origin)
+{
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    for (const ui::OverlayLabel& label : state.overlay_labels()) {
+        const ImVec2 at{origin.x + label.pixel.x, origin.y + label.pixel.y};
+        const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+        draw->AddRectFilled({at.x - 2.0f, at.y - 1.0f}, {at.x + size.x + 2.0f, at.y + size.y + 1.0f},
+                            IM_COL32(0, 0, 0, 170));
+        draw->AddText(at, to_imgui(label.rgb), label.text.c_str());
+    }
+}
+
+// Middle drag orbits about the picked point (the first drag aims the camera at it).
+void handle_orbit(InspectorState& state, ViewportPanel& panel)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Middle) && state.selection().point) {
+        state.set_orbit_target(state.selection().point);
+        panel.orbiting = true;
+    }
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Middle))
+        panel.orbiting = false;
+    if (panel.orbiting && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f))
+        state.orbit(-io.MouseDelta.x * kOrbitDegreesPerPixel, io.MouseDelta.y * kOrbitDegreesPerPixel);
+}
+
 } // namespace
 
 void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_seconds)
 {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {0.0f, 0.0f});
-    const bool open = ImGui::Begin("Viewport", nullptr, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+    const bool open = ImGui::Begin("Viewport", nullptr,
+                                   ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse |
+                                       ImGuiWindowFlags_MenuBar);
     ImGui::PopStyleVar();
+    if (open)
+        draw_overlay_menu(state);
     if (!open || !state.has_zone()) {
         if (open)
             ImGui::TextUnformatted("No zone: open one in the Zone panel, or drop a file on the window.");
@@ -69,10 +150,15 @@ void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_s
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 size{float(std::max(image.width, 1u)), float(std::max(image.height, 1u))};
     // A button over the picture owns the clicks, so dragging on it never moves the window.
-    ImGui::InvisibleButton("picture", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+    ImGui::InvisibleButton("picture", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
     if (panel.texture)
         ImGui::GetWindowDrawList()->AddImage(panel.texture, origin, {origin.x + size.x, origin.y + size.y});
+    draw_labels(state, origin);
     draw_overlay(state, origin);
+    draw_legend(state, origin, size);
+    handle_orbit(state, panel);
 
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
         CameraInput wheel;

@@ -1,0 +1,152 @@
+// The bake panel: method, separator level and threads for a portal-vis bake of the open zone,
+// run on a background thread (BakeJob) with a progress bar and a cancel; the result becomes the
+// "baked" PVS source of the Culling panel, and is compared with the zone file's own PVS: for
+// the shown region, the regions only one of them lets it see (file only in red, baked only in
+// green), and the totals over the whole zone.
+#include "ui/gui/panels.h"
+
+#include "ui/gui/pvs_rows.h"
+
+#include <algorithm>
+#include <string>
+#include <thread>
+
+namespace pvs::gui {
+
+namespace {
+
+const ImVec4 kOnlyFileColor{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kOnlyBakedColor{0.45f, 1.0f, 0.45f, 1.0f};
+
+void draw_request(InspectorState& state, BakePanel& panel)
+{
+    BakeRequest& r = panel.request;
+    int method = r.method == VisParams::Method::Fast ? 0 : 1;
+    ImGui::RadioButton("portal-fast", &method, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("portal-full", &method, 1);
+    r.method = method == 0 ? VisParams::Method::Fast : VisParams::Method::Full;
+    if (r.method == VisParams::Method::Full) {
+        ImGui::SetNextItemWidth(100.0f);
+        ImGui::SliderInt("level", &r.level, 0, 4);
+        ImGui::SameLine();
+    }
+    int threads = int(r.threads);
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    ImGui::SetNextItemWidth(100.0f);
+    if (ImGui::SliderInt("threads", &threads, 1, cores))
+        r.threads = unsigned(std::clamp(threads, 1, cores));
+
+    BakeJob& job = state.bake_job();
+    if (job.status() == BakeStatus::Running) {
+        if (ImGui::Button("Cancel"))
+            job.cancel();
+        ImGui::SameLine();
+        ImGui::ProgressBar(float(job.progress()), {-1.0f, 0.0f});
+    } else if (ImGui::Button("Bake")) {
+        state.start_bake(panel.request);
+    }
+}
+
+void draw_outcome(const InspectorState& state)
+{
+    const BakeJob& job = state.bake_job();
+    if (job.status() == BakeStatus::Failed)
+        ImGui::TextColored({1.0f, 0.4f, 0.3f, 1.0f}, "bake failed: %s", job.error().c_str());
+    else if (job.status() == BakeStatus::Cancelled)
+        ImGui::TextDisabled("cancelled: nothing kept");
+    if (!state.baked_pvs())
+        return;
+    const VisReport& r = state.baked_report();
+    ImGui::Text("baked: %zu portals, %.2f s on %u threads, mean %.1f visible", r.portals, r.seconds, r.threads,
+                r.mean_visible);
+}
+
+void update_diff(const InspectorState& state, BakePanel& panel, int32_t region)
+{
+    if (panel.diff_pvs == state.pvs_generation() && panel.diff_region == region)
+        return;
+    const bool new_pvs = panel.diff_pvs != state.pvs_generation();
+    panel.diff_pvs = state.pvs_generation();
+    panel.diff_region = region;
+    panel.only_file.clear();
+    panel.only_baked.clear();
+    const Zone& zone = state.zone();
+    if (!zone.baked_pvs || !state.baked_pvs())
+        return;
+    if (new_pvs) {
+        const PvsDiffCounts counts = diff_pvs(*zone.baked_pvs, *state.baked_pvs());
+        panel.total_only_file = counts.only_a;
+        panel.total_only_baked = counts.only_b;
+    }
+    if (region < 0)
+        return;
+    RegionDiff diff = diff_regions(pvs_row_regions(*zone.baked_pvs, uint32_t(region)),
+                                   pvs_row_regions(*state.baked_pvs(), uint32_t(region)));
+    panel.only_file = std::move(diff.only_a);
+    panel.only_baked = std::move(diff.only_b);
+}
+
+void draw_diff_list(InspectorState& state, const char* id, const std::vector<uint32_t>& regions, ImVec4 colour)
+{
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    if (ImGui::BeginChild(id, {ImGui::GetContentRegionAvail().x * (id[0] == 'f' ? 0.5f : 1.0f), 0.0f}, true)) {
+        ImGuiListClipper clipper;
+        clipper.Begin(int(regions.size()));
+        while (clipper.Step())
+            for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+                const uint32_t r = regions[size_t(i)];
+                if (ImGui::Selectable(("region " + std::to_string(r) + "##" + id).c_str())) {
+                    state.select_region(int32_t(r));
+                    state.go_to_region(r);
+                }
+            }
+    }
+    ImGui::EndChild();
+    ImGui::PopStyleColor();
+}
+
+void draw_diff(InspectorState& state, BakePanel& panel)
+{
+    if (!state.baked_pvs())
+        return;
+    if (!state.zone().baked_pvs) {
+        ImGui::TextDisabled("the zone file has no PVS to compare with");
+        return;
+    }
+    const int32_t region = state.shown_region();
+    update_diff(state, panel, region);
+    ImGui::TextColored(kOnlyFileColor, "file only: %llu pairs", static_cast<unsigned long long>(panel.total_only_file));
+    ImGui::SameLine();
+    ImGui::TextColored(kOnlyBakedColor, "baked only: %llu pairs",
+                       static_cast<unsigned long long>(panel.total_only_baked));
+    if (region < 0)
+        return;
+    ImGui::Text("region %d: %zu file only, %zu baked only", region, panel.only_file.size(), panel.only_baked.size());
+    draw_diff_list(state, "file_only", panel.only_file, kOnlyFileColor);
+    ImGui::SameLine();
+    draw_diff_list(state, "baked_only", panel.only_baked, kOnlyBakedColor);
+}
+
+} // namespace
+
+void draw_bake_panel(InspectorState& state, BakePanel& panel)
+{
+    if (!ImGui::Begin("Bake")) {
+        ImGui::End();
+        return;
+    }
+    if (state.has_zone()) {
+        draw_request(state, panel);
+        draw_outcome(state);
+        if (state.baked_pvs() && state.pvs_source() != PvsSource::Baked) {
+            if (ImGui::SmallButton("Cull with the baked PVS"))
+                state.set_pvs_source(PvsSource::Baked);
+        }
+        ImGui::Separator();
+        draw_diff(state, panel);
+    }
+    ImGui::End();
+}
+
+} // namespace pvs::gui

@@ -1,0 +1,198 @@
+// InspectorState's views beyond the frame itself: the overlays' inputs (camera path, node
+// polygons, portals, what the PVS stage kept), the PVS source switch and the bake, the field of
+// view and the orbit camera.
+#include "ui/gui/inspector_state.h"
+
+#include "ui/gui/camera_math.h"
+#include "visibility/portal/portalize.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pvs::gui {
+
+const char* pvs_source_name(PvsSource source)
+{
+    switch (source) {
+    case PvsSource::File: return "file";
+    case PvsSource::None: return "none";
+    case PvsSource::Baked: return "baked";
+    }
+    return "?";
+}
+
+// ---- Overlays ----------------------------------------------------------------------------------
+
+const std::vector<Winding>& InspectorState::node_polygons()
+{
+    if (!node_polygons_) {
+        // The same world box as the portals: the zone with a margin, so no plane lies on it.
+        node_polygons_ = zone_ ? node_plane_polygons(zone_->tree, zone_portal_world(*zone_)) : std::vector<Winding>{};
+    }
+    return *node_polygons_;
+}
+
+const PortalSet& InspectorState::portals()
+{
+    if (zone_ && zone_->portals)
+        return *zone_->portals;
+    if (!built_portals_) {
+        try {
+            built_portals_ = zone_ ? build_zone_portals(*zone_) : PortalSet{};
+        } catch (const std::exception& e) { // bad_alloc on a hostile tree: no portals, say why
+            error_ = e.what();
+            built_portals_ = PortalSet{};
+        }
+    }
+    return *built_portals_;
+}
+
+std::vector<uint32_t> InspectorState::regions_under(int32_t node) const
+{
+    std::vector<uint32_t> regions;
+    if (!zone_)
+        return regions;
+    const BspTree& tree = zone_->tree;
+    std::vector<int32_t> stack{node};
+    std::vector<bool> seen(tree.nodes.size(), false); // a bad tree with a cycle must not hang
+    while (!stack.empty()) {
+        const int32_t child = stack.back();
+        stack.pop_back();
+        if (BspTree::is_leaf(child)) {
+            const int32_t leaf = BspTree::leaf_index(child);
+            if (size_t(leaf) < tree.leaf_region.size() && tree.leaf_region[size_t(leaf)] >= 0)
+                regions.push_back(uint32_t(tree.leaf_region[size_t(leaf)]));
+            continue;
+        }
+        if (size_t(child) >= tree.nodes.size() || seen[size_t(child)])
+            continue;
+        seen[size_t(child)] = true;
+        stack.push_back(tree.nodes[size_t(child)].children[1]);
+        stack.push_back(tree.nodes[size_t(child)].children[0]);
+    }
+    std::sort(regions.begin(), regions.end());
+    regions.erase(std::unique(regions.begin(), regions.end()), regions.end());
+    return regions;
+}
+
+void InspectorState::update_after_pvs()
+{
+    trace_point(zone_->tree, cull_.position, path_);
+    path_nodes_.clear();
+    for (const PathStep& step : path_)
+        path_nodes_.push_back(step.node);
+    if (!overlays.pvs_membership) {
+        after_pvs_.clear();
+        return;
+    }
+    // What the PVS stage alone keeps from the same camera (the frame's own stats keep only counts).
+    const bool pvs_stage = cull_mode == CullMode::Pvs || cull_mode == CullMode::PvsFrustum;
+    culler_->cull(cull_, {pvs_stage ? CullMode::Pvs : CullMode::None, false}, after_pvs_);
+}
+
+void InspectorState::paint_overlays()
+{
+    labels_.clear();
+    if (render_mode == ui::RenderMode::IdBuffer)
+        return; // its pixels are face codes
+    ui::OverlayScene scene;
+    scene.zone = zone_.get();
+    scene.view = view_;
+    scene.cull = cull_;
+    scene.locked = locked_;
+    scene.cull_region = last_cull_.region;
+    scene.visible = visible_;
+    scene.after_pvs = after_pvs_;
+    scene.path_nodes = path_nodes_;
+    scene.highlighted_node = selected_node;
+    if (overlays.split_planes)
+        scene.node_polygons = &node_polygons();
+    if (overlays.portals)
+        scene.portals = &portals();
+    ui::paint_overlays(image_, overlays, scene, labels_);
+}
+
+// ---- PVS source and bake -----------------------------------------------------------------------
+
+bool InspectorState::has_pvs_source(PvsSource source) const
+{
+    switch (source) {
+    case PvsSource::File: return zone_ && zone_->baked_pvs;
+    case PvsSource::None: return zone_ != nullptr;
+    case PvsSource::Baked: return zone_ && baked_pvs_;
+    }
+    return false;
+}
+
+const Pvs* InspectorState::active_pvs() const
+{
+    if (!zone_)
+        return nullptr;
+    if (pvs_source_ == PvsSource::File && zone_->baked_pvs)
+        return &*zone_->baked_pvs;
+    if (pvs_source_ == PvsSource::Baked && baked_pvs_)
+        return &*baked_pvs_;
+    return nullptr;
+}
+
+void InspectorState::rebuild_culler()
+{
+    culler_.reset();
+    ++pvs_generation_;
+    if (zone_)
+        culler_ = std::make_unique<Culler>(*zone_, active_pvs());
+}
+
+bool InspectorState::set_pvs_source(PvsSource source)
+{
+    if (!has_pvs_source(source))
+        return false;
+    pvs_source_ = source;
+    rebuild_culler();
+    return true;
+}
+
+bool InspectorState::start_bake(const BakeRequest& request)
+{
+    return zone_ && bake_.start(*zone_, request);
+}
+
+void InspectorState::poll_bake()
+{
+    if (bake_.status() != BakeStatus::Running || bake_.poll() != BakeStatus::Done)
+        return;
+    baked_pvs_ = bake_.take_result();
+    baked_report_ = bake_.report();
+    ++pvs_generation_;
+    if (pvs_source_ == PvsSource::Baked)
+        rebuild_culler(); // it pointed at the previous bake
+}
+
+// ---- Camera ------------------------------------------------------------------------------------
+
+void InspectorState::set_fov(float degrees)
+{
+    view_.fov_y_degrees = std::isfinite(degrees) ? std::clamp(degrees, kMinFovDegrees, kMaxFovDegrees) : 70.0f;
+    if (!locked_)
+        cull_ = view_;
+}
+
+void InspectorState::set_orbit_target(std::optional<glm::vec3> target)
+{
+    orbit_target_ = target;
+    if (target)
+        aim_along(view_, *target - view_.position, kMaxPitchDegrees);
+    if (!locked_)
+        cull_ = view_;
+}
+
+void InspectorState::orbit(float yaw_degrees, float pitch_degrees)
+{
+    if (!orbit_target_)
+        return;
+    orbit_about(view_, *orbit_target_, yaw_degrees, pitch_degrees, kMaxPitchDegrees);
+    if (!locked_)
+        cull_ = view_;
+}
+
+} // namespace pvs::gui

@@ -1,0 +1,168 @@
+#include "ui/zone_overlays.h"
+
+#include "ui/overlay_fill.h"
+#include "ui/overlay_lines.h"
+
+#include <algorithm>
+
+namespace pvs::ui {
+
+namespace {
+
+bool contains(std::span<const uint32_t> ascending, uint32_t value)
+{
+    return std::binary_search(ascending.begin(), ascending.end(), value);
+}
+
+void paint_split_planes(Image& image, const OverlayScene& scene, const LineProjection& lines)
+{
+    if (!scene.node_polygons || scene.path_nodes.empty())
+        return;
+    const int32_t highlighted = scene.highlighted_node >= 0 ? scene.highlighted_node : int32_t(scene.path_nodes.back());
+    const std::vector<Winding>& polygons = *scene.node_polygons;
+    for (uint32_t node : scene.path_nodes)
+        if (node < polygons.size() && int32_t(node) != highlighted) {
+            fill_polygon_3d(image, scene.view, polygons[node].points, kSplitPlaneColor, kSplitPlaneAlpha);
+            outline_polygon_3d(image, lines, polygons[node].points, kSplitPlaneColor);
+        }
+    // The highlighted one last, so it reads on top; it may be a node off the path (a selection).
+    if (highlighted >= 0 && size_t(highlighted) < polygons.size()) {
+        const Winding& w = polygons[size_t(highlighted)];
+        fill_polygon_3d(image, scene.view, w.points, kCurrentSplitPlaneColor, kCurrentSplitPlaneAlpha);
+        outline_polygon_3d(image, lines, w.points, kCurrentSplitPlaneColor);
+    }
+}
+
+void paint_membership(Image& image, const OverlayScene& scene, const LineProjection& lines)
+{
+    const Zone& zone = *scene.zone;
+    // Culled first, so the drawn and current boxes end on top where edges meet.
+    for (Membership pass : {Membership::CulledByPvs, Membership::CulledByFrustum, Membership::Drawn,
+                            Membership::Current})
+        for (uint32_t r = 0; r < zone.region_count(); ++r)
+            if (classify_region(r, scene.cull_region, scene.visible, scene.after_pvs) == pass)
+                draw_box_3d(image, lines, zone.regions[r].bounds, membership_color(pass));
+}
+
+void paint_portals(Image& image, const OverlayScene& scene, const LineProjection& lines)
+{
+    if (!scene.portals)
+        return;
+    const PortalSet& set = *scene.portals;
+    for (const Portal& p : set.portals) {
+        const bool shown = (p.regions[0] >= 0 && contains(scene.visible, uint32_t(p.regions[0]))) ||
+                           (p.regions[1] >= 0 && contains(scene.visible, uint32_t(p.regions[1])));
+        if (!shown || size_t(p.first_point) + p.point_count > set.points.size())
+            continue;
+        outline_polygon_3d(image, lines, std::span(set.points).subspan(p.first_point, p.point_count), kPortalColor);
+    }
+}
+
+void paint_zone_lines(Image& image, const OverlayScene& scene, std::vector<OverlayLabel>& labels)
+{
+    const Zone& zone = *scene.zone;
+    std::vector<bool> drawn(zone.zone_lines.size(), false);
+    auto show = [&](const Aabb& box, const std::string& target) {
+        draw_box_3d(image, scene.view, box, kZoneLineColor);
+        if (box.empty())
+            return;
+        if (const auto at = project_to_pixel(scene.view, image.width, image.height, box.center()))
+            if (at->x >= 0.0f && at->y >= 0.0f && at->x < float(image.width) && at->y < float(image.height))
+                labels.push_back({*at, "-> " + (target.empty() ? std::string("(no target)") : target), kZoneLineColor});
+    };
+    // A zone line with its own trigger box once; one without, at each region that leads there.
+    for (size_t i = 0; i < zone.zone_lines.size(); ++i)
+        if (!zone.zone_lines[i].bounds.empty()) {
+            show(zone.zone_lines[i].bounds, zone.zone_lines[i].target);
+            drawn[i] = true;
+        }
+    for (const Region& region : zone.regions) {
+        if (!(region.flags & kRegionZoneLine))
+            continue;
+        const bool known = region.zone_line >= 0 && size_t(region.zone_line) < zone.zone_lines.size();
+        if (known && drawn[size_t(region.zone_line)])
+            continue;
+        show(region.bounds, known ? zone.zone_lines[size_t(region.zone_line)].target : std::string());
+    }
+}
+
+} // namespace
+
+Membership classify_region(uint32_t region, int32_t current, std::span<const uint32_t> visible,
+                           std::span<const uint32_t> after_pvs)
+{
+    if (int32_t(region) == current)
+        return Membership::Current;
+    if (contains(visible, region))
+        return Membership::Drawn;
+    return contains(after_pvs, region) ? Membership::CulledByFrustum : Membership::CulledByPvs;
+}
+
+uint32_t membership_color(Membership membership)
+{
+    switch (membership) {
+    case Membership::Current: return kCurrentRegionColor;
+    case Membership::Drawn: return kDrawnRegionColor;
+    case Membership::CulledByFrustum: return kFrustumCulledColor;
+    case Membership::CulledByPvs: return kPvsCulledColor;
+    }
+    return 0;
+}
+
+const char* membership_name(Membership membership)
+{
+    switch (membership) {
+    case Membership::Current: return "camera's region";
+    case Membership::Drawn: return "in PVS, drawn";
+    case Membership::CulledByFrustum: return "in PVS, culled by frustum";
+    case Membership::CulledByPvs: return "culled by PVS";
+    }
+    return "?";
+}
+
+void paint_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
+                    std::vector<OverlayLabel>& labels)
+{
+    labels.clear();
+    if (!scene.zone || image.rgba.empty())
+        return;
+    const LineProjection lines(scene.view); // the camera's matrices, once for every line
+    if (settings.split_planes)
+        paint_split_planes(image, scene, lines);
+    if (settings.pvs_membership)
+        paint_membership(image, scene, lines);
+    if (settings.region_bounds)
+        for (uint32_t r : scene.visible)
+            if (r < scene.zone->region_count())
+                draw_box_3d(image, lines, scene.zone->regions[r].bounds, region_color(r));
+    if (settings.portals)
+        paint_portals(image, scene, lines);
+    if (settings.zone_lines)
+        paint_zone_lines(image, scene, labels);
+    if (settings.locked_frustum && scene.locked)
+        draw_frustum(image, scene.view, scene.cull, kLockedFrustumColor);
+}
+
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings)
+{
+    std::vector<LegendEntry> legend;
+    if (settings.split_planes) {
+        legend.push_back({"split plane on camera path", kSplitPlaneColor});
+        legend.push_back({"current / selected split plane", kCurrentSplitPlaneColor});
+    }
+    if (settings.pvs_membership)
+        for (Membership m : {Membership::Current, Membership::Drawn, Membership::CulledByFrustum,
+                             Membership::CulledByPvs})
+            legend.push_back({membership_name(m), membership_color(m)});
+    if (settings.region_bounds)
+        legend.push_back({"drawn region bounds (region colour)", 0xC0C0C0});
+    if (settings.portals)
+        legend.push_back({"portal of a drawn region", kPortalColor});
+    if (settings.zone_lines)
+        legend.push_back({"zone line (-> target)", kZoneLineColor});
+    if (settings.locked_frustum)
+        legend.push_back({"locked culling frustum", kLockedFrustumColor});
+    return legend;
+}
+
+} // namespace pvs::ui

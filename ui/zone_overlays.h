@@ -1,0 +1,101 @@
+// The inspector's overlays, drawn over a rendered picture on the CPU (ui/overlay_fill.h,
+// ui/overlay_lines.h), each behind its own toggle, and the legend that names their colours:
+//  - PVS membership: every region's bounds box in the colour of its class for this frame
+//    (classify_region): the culling camera's region, drawn, culled by the frustum (in the PVS
+//    but outside the view volume), culled by the PVS. Wireframe, so culled regions, which have
+//    no pixels in the picture, still show where they are.
+//  - BSP split planes: the plane of every node on the path from the root to the culling
+//    camera's leaf, as a translucent polygon clipped to its node's cell (node_plane_polygons,
+//    visibility/geometry/bsp_volume.h), the highlighted node (the BSP panel's selection, else
+//    the deepest on the path) stronger; every plane's outline is drawn too, so planes that
+//    overlap stay apart.
+//  - Portals: the outline of every portal with a drawn region on either side.
+//  - Region bounds: the bounds box of every drawn region in its region_color.
+//  - Zone lines: each zone line's trigger box (its region's bounds when the file gives none) and
+//    a label with its target, returned as text for the UI to draw (an Image has no font).
+//  - Locked frustum: the culling camera's view volume while it is locked (kLockedFrustumColor).
+// Overlays are drawn on top without a depth test (see overlay_fill.h); IdBuffer pictures must
+// stay face codes, so callers do not paint them.
+#pragma once
+
+#include "ui/software_renderer.h"
+#include "visibility/camera.h"
+#include "visibility/geometry/winding.h"
+#include "visibility/zone.h"
+
+#include <array>
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace pvs::ui {
+
+struct OverlaySettings {
+    bool pvs_membership = false;
+    bool split_planes = false;
+    bool portals = false;
+    bool region_bounds = false;
+    bool zone_lines = true;
+    bool locked_frustum = true;
+};
+
+// A region's part in this frame's culling.
+enum class Membership : uint8_t { Current, Drawn, CulledByFrustum, CulledByPvs };
+// `visible` and `after_pvs` ascending (after_pvs: what the PVS stage kept, every region when it
+// did not run); `current` the culling camera's region or -1.
+Membership classify_region(uint32_t region, int32_t current, std::span<const uint32_t> visible,
+                           std::span<const uint32_t> after_pvs);
+
+// Colours (0xRRGGBB) and fill weights (out of 256).
+inline constexpr uint32_t kCurrentRegionColor = 0xFFFFFF;
+inline constexpr uint32_t kDrawnRegionColor = 0x40E040;
+inline constexpr uint32_t kFrustumCulledColor = 0xFFA020;
+inline constexpr uint32_t kPvsCulledColor = 0xE03030;
+inline constexpr uint32_t kSplitPlaneColor = 0x30C0FF;
+inline constexpr uint32_t kCurrentSplitPlaneColor = 0xFFE040;
+inline constexpr uint32_t kPortalColor = 0x00FFC0;
+inline constexpr uint32_t kZoneLineColor = 0xFF00FF; // as kFlagTints' zone line
+inline constexpr uint32_t kSplitPlaneAlpha = 24; // a dozen planes overlap: keep each faint
+inline constexpr uint32_t kCurrentSplitPlaneAlpha = 90;
+
+uint32_t membership_color(Membership membership);
+const char* membership_name(Membership membership);
+
+// One frame's inputs. Spans and pointers are borrowed for the call; null / empty = not available
+// (that overlay then draws nothing).
+struct OverlayScene {
+    const Zone* zone = nullptr;
+    Camera view;                         // the picture's camera (its aspect = the image's)
+    Camera cull;                         // the culling camera
+    bool locked = false;                 // cull is locked (draw its frustum)
+    int32_t cull_region = -1;            // the culling camera's region
+    std::span<const uint32_t> visible;   // drawn regions, ascending
+    std::span<const uint32_t> after_pvs; // kept by the PVS stage, ascending
+    std::span<const uint32_t> path_nodes; // node indices root -> camera leaf
+    int32_t highlighted_node = -1;       // -1: the deepest of path_nodes
+    const std::vector<Winding>* node_polygons = nullptr; // per node (node_plane_polygons)
+    const PortalSet* portals = nullptr;
+};
+
+// A text label at a pixel of the picture (a zone line's target).
+struct OverlayLabel {
+    glm::vec2 pixel;
+    std::string text;
+    uint32_t rgb;
+};
+
+// Draws the enabled overlays into `image` (back to front: planes, boxes, portals, zone lines,
+// frustum) and replaces `labels` with the labels to draw over it.
+void paint_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
+                    std::vector<OverlayLabel>& labels);
+
+// The legend: a name and colour per colour the enabled overlays use, in drawing order.
+struct LegendEntry {
+    const char* name;
+    uint32_t rgb;
+};
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings);
+
+} // namespace pvs::ui
