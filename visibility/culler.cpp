@@ -151,6 +151,8 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
         });
         if (add_own_region)
             consider(uint32_t(at.region));
+    } else if (planes) {
+        kept = boxes_.collect_all(*planes, visible.data()); // every region, four boxes at a time
     } else {
         for (uint32_t r = 0; r < region_count; ++r)
             consider(r);

@@ -61,6 +61,27 @@ TEST(FrustumBoxes, SameAnswersAsFrustumIntersectsOnRandomBoxes)
     EXPECT_GT(inside_sides, inside_all);
 }
 
+TEST(FrustumBoxes, CollectAllGivesTheBoxesThatIntersectInOrder)
+{
+    std::mt19937 rng(13);
+    for (size_t count : {0u, 1u, 3u, 4u, 7u, 1001u}) { // whole groups of four and tails
+        const std::vector<Aabb> boxes = random_boxes(rng, count);
+        const FrustumBoxes packed(boxes);
+        for (int f = 0; f < 20; ++f) {
+            const Frustum frustum = random_frustum(rng);
+            for (auto which : {FrustumBoxes::Planes::All, FrustumBoxes::Planes::SidesOnly}) {
+                const auto planes = FrustumBoxes::prepare(frustum, which);
+                std::vector<uint32_t> expected, got(count + 1, 0xFFFFFFFFu);
+                for (uint32_t i = 0; i < count; ++i)
+                    if (which == FrustumBoxes::Planes::All ? frustum.intersects(boxes[i]) : frustum.intersects_sides(boxes[i]))
+                        expected.push_back(i);
+                got.resize(packed.collect_all(planes, got.data()));
+                EXPECT_EQ(got, expected) << count << " boxes, frustum " << f;
+            }
+        }
+    }
+}
+
 TEST(FrustumBoxes, BoxesTouchingAPlaneAreKeptLikeTheScalarTest)
 {
     // A box whose positive vertex lies on the left plane (distance 0 or within an ulp): the

@@ -8,11 +8,15 @@
 
 namespace pvs {
 
-FrustumBoxes::FrustumBoxes(std::span<const Aabb> boxes) : boxes_(boxes.size())
+FrustumBoxes::FrustumBoxes(std::span<const Aabb> boxes)
+    : boxes_(boxes.size()), min_x_(boxes.size()), min_y_(boxes.size()), min_z_(boxes.size()), max_x_(boxes.size()),
+      max_y_(boxes.size()), max_z_(boxes.size())
 {
     for (size_t i = 0; i < boxes.size(); ++i) {
         const Aabb& b = boxes[i];
         boxes_[i] = {{b.min.x, b.min.y, b.min.z, 0.0f}, {b.max.x, b.max.y, b.max.z, 0.0f}};
+        min_x_[i] = b.min.x, min_y_[i] = b.min.y, min_z_[i] = b.min.z;
+        max_x_[i] = b.max.x, max_y_[i] = b.max.y, max_z_[i] = b.max.z;
     }
 }
 
@@ -21,6 +25,7 @@ FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes p
     PlaneGroups g;
     const int plane_count = planes == Planes::All ? 6 : 4;
     g.group_count = planes == Planes::All ? 2 : 1;
+    g.plane_count = plane_count;
     for (int lane = 0; lane < 8; ++lane) {
         const int group = lane / 4, k = lane % 4;
         // A lane without a plane: n = 0 and dist = -1, so every distance is +1 (in front).
@@ -59,6 +64,39 @@ bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
     return _mm_movemask_ps(outside) == 0;
 }
 
+size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
+{
+    const size_t n = boxes_.size();
+    size_t kept = 0, i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const __m128 lo_x = _mm_loadu_ps(&min_x_[i]), lo_y = _mm_loadu_ps(&min_y_[i]), lo_z = _mm_loadu_ps(&min_z_[i]);
+        const __m128 hi_x = _mm_loadu_ps(&max_x_[i]), hi_y = _mm_loadu_ps(&max_y_[i]), hi_z = _mm_loadu_ps(&max_z_[i]);
+        __m128 outside = _mm_setzero_ps();
+        for (int p = 0; p < planes.plane_count; ++p) {
+            const int g = p / 4, k = p % 4;
+            // intersects()'s sum, in the same order, for four boxes against plane p.
+            __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_set1_ps(planes.pos_x[g][k])),
+                                  _mm_mul_ps(lo_x, _mm_set1_ps(planes.neg_x[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(hi_y, _mm_set1_ps(planes.pos_y[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(lo_y, _mm_set1_ps(planes.neg_y[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(hi_z, _mm_set1_ps(planes.pos_z[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(lo_z, _mm_set1_ps(planes.neg_z[g][k])));
+            d = _mm_sub_ps(d, _mm_set1_ps(planes.dist[g][k]));
+            outside = _mm_or_ps(outside, _mm_cmplt_ps(d, _mm_setzero_ps()));
+        }
+        const unsigned inside = ~unsigned(_mm_movemask_ps(outside)) & 15u;
+        for (unsigned lane = 0; lane < 4; ++lane) { // branch-free append
+            out[kept] = uint32_t(i + lane);
+            kept += (inside >> lane) & 1u;
+        }
+    }
+    for (; i < n; ++i) {
+        out[kept] = uint32_t(i);
+        kept += size_t(intersects(uint32_t(i), planes));
+    }
+    return kept;
+}
+
 #else
 
 bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
@@ -75,6 +113,16 @@ bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
             outside |= d - planes.dist[g][k] < 0.0f;
         }
     return !outside;
+}
+
+size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
+{
+    size_t kept = 0;
+    for (size_t i = 0; i < boxes_.size(); ++i) {
+        out[kept] = uint32_t(i);
+        kept += size_t(intersects(uint32_t(i), planes));
+    }
+    return kept;
 }
 
 #endif

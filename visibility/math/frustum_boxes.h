@@ -35,6 +35,7 @@ public:
         float neg_x[2][4], neg_y[2][4], neg_z[2][4]; // n- per lane
         float dist[2][4];
         int group_count = 1;
+        int plane_count = 4; // 4 (sides) or 6
     };
 
     explicit FrustumBoxes(std::span<const Aabb> boxes);
@@ -44,8 +45,14 @@ public:
     // Same answer as frustum.intersects(box i) (or intersects_sides) for the prepared planes.
     bool intersects(uint32_t box, const PlaneGroups& planes) const;
 
+    // Every box, in order: writes the indices of the boxes that intersect to `out` (room for
+    // size() entries), ascending, and returns their count. The same answers as intersects(),
+    // four boxes at a time against one plane (the boxes are also kept plane-major, SoA, for
+    // this): the path of a camera with no PVS row, where every region is tested.
+    size_t collect_all(const PlaneGroups& planes, uint32_t* out) const;
+
     size_t size() const { return boxes_.size(); }
-    size_t memory_bytes() const { return boxes_.capacity() * sizeof(PackedBox); }
+    size_t memory_bytes() const { return boxes_.capacity() * sizeof(PackedBox) + 6 * min_x_.capacity() * sizeof(float); }
 
 private:
     struct alignas(32) PackedBox {
@@ -53,6 +60,7 @@ private:
         float max[4];
     };
     std::vector<PackedBox> boxes_;
+    std::vector<float> min_x_, min_y_, min_z_, max_x_, max_y_, max_z_; // the same boxes, SoA
 };
 
 } // namespace pvs
