@@ -1,6 +1,7 @@
 #include "app/cmd_inspect.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
 #include "ui/gui/inspector_app.h"
 
 #include <memory>
@@ -76,22 +77,10 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         ->check(CLI::Range(1, 100000));
     cmd->add_option("--size", o->size, "Window size WIDTHxHEIGHT")
         ->capture_default_str()
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return parse_size_argument(text)
-                           ? std::string()
-                           : "expects WIDTHxHEIGHT with each 1..8192, e.g. 1280x800, got '" + text + "'";
-            },
-            "WxH"));
+        ->check(size_validator());
     cmd->add_option("--camera", o->camera, "Start camera x,y,z,yaw,pitch (zone units, degrees; z up, yaw 0 = +x); "
                                            "default: a view down the longest open line from a large region")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return parse_camera_argument(text) ? std::string()
-                                                   : "expects x,y,z,yaw,pitch (five numbers, no spaces), got '" +
-                                                         text + "'";
-            },
-            "X,Y,Z,YAW,PITCH"));
+        ->check(camera_validator());
     cmd->add_option("--cull", o->cull, "Culling stages at start")
         ->capture_default_str()
         ->check(CLI::IsMember({"none", "frustum", "pvs", "pvs+frustum"}));

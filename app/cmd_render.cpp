@@ -1,6 +1,7 @@
 #include "app/cmd_render.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
 #include "app/pvs_source.h"
 
 #include "ui/software_renderer.h"
@@ -112,36 +113,18 @@ void register_render_command(CLI::App& app, int& exit_code)
     cmd->add_option("--camera", options->camera, "Camera position and direction, zone units and degrees (z up; "
                                                   "yaw 0 = +x, 90 = +y; pitch up from the horizontal)")
         ->required()
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return parse_camera_argument(text) ? std::string()
-                                                   : "expects x,y,z,yaw,pitch (five numbers, no spaces), got '" +
-                                                         text + "'";
-            },
-            "X,Y,Z,YAW,PITCH"));
+        ->check(camera_validator());
     cmd->add_option("--cull-camera", options->cull_camera,
                     "Cull from this camera instead (x,y,z,yaw,pitch, same lens as --camera) while drawing from "
                     "--camera: the locked culling camera, as Source's r_lockpvs. The printed stats are its own, and "
                     "its view volume is drawn in yellow (except with --mode ids)")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return parse_camera_argument(text) ? std::string()
-                                                   : "expects x,y,z,yaw,pitch (five numbers, no spaces), got '" +
-                                                         text + "'";
-            },
-            "X,Y,Z,YAW,PITCH"));
+        ->check(camera_validator());
     cmd->add_option("--fov", options->fov, "Vertical field of view in degrees")
         ->capture_default_str()
         ->check(CLI::Range(1.0f, 179.0f));
     cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT (1..8192 each)")
         ->capture_default_str()
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                return parse_size_argument(text)
-                           ? std::string()
-                           : "expects WIDTHxHEIGHT with each 1..8192, e.g. 800x600, got '" + text + "'";
-            },
-            "WxH"));
+        ->check(size_validator());
     std::vector<std::string> mode_names;
     for (ui::RenderMode m : ui::kRenderModes)
         mode_names.emplace_back(ui::render_mode_name(m));

@@ -1,6 +1,7 @@
 #include "app/cmd_walk.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
 #include "app/pvs_source.h"
 #include "ui/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
@@ -220,7 +221,7 @@ void register_walk_command(CLI::App& app, int& exit_code)
                     "portals built from the zone's tree)")
         ->check(CLI::IsMember(pvs_source_names()))
         ->capture_default_str();
-    cmd->add_option("--size", o->size, "ID-buffer size WIDTHxHEIGHT")->capture_default_str();
+    cmd->add_option("--size", o->size, "ID-buffer size WIDTHxHEIGHT")->capture_default_str()->check(size_validator());
     cmd->add_option("--fov", o->fov, "Vertical field of view in degrees")->capture_default_str();
     cmd->add_option("--csv", o->csv, "Write one row per camera to this CSV file");
     cmd->add_flag("--render-time", o->render_time, "Also time a textured render of each culled frame");

@@ -1,0 +1,33 @@
+// CLI11 validators for the option values several subcommands share (app/arguments.h parses them),
+// so every command refuses a bad --camera or --size with the same message before it runs.
+#pragma once
+
+#include "app/arguments.h"
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace pvs::app {
+
+inline CLI::Validator camera_validator()
+{
+    return CLI::Validator(
+        [](std::string& text) {
+            return parse_camera_argument(text)
+                       ? std::string()
+                       : "expects x,y,z,yaw,pitch (five numbers, no spaces), got '" + text + "'";
+        },
+        "X,Y,Z,YAW,PITCH");
+}
+
+inline CLI::Validator size_validator()
+{
+    return CLI::Validator(
+        [](std::string& text) {
+            return parse_size_argument(text) ? std::string()
+                                             : "expects WIDTHxHEIGHT with each 1..8192, e.g. 800x600, got '" + text + "'";
+        },
+        "WxH");
+}
+
+} // namespace pvs::app
