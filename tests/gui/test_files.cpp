@@ -1,6 +1,7 @@
 // The file browser's listing (a temporary directory of known files), the recent-files store
 // (order, duplicates, limit, persistence, corrupt and oversized files, the XDG path), and the
 // File menu's open: success remembered, failure in the error modal, never thrown.
+#include "tests/gui/headless_imgui.h"
 #include "ui/gui/file_browser.h"
 #include "ui/gui/panels.h"
 #include "ui/gui/recent_files.h"
@@ -147,14 +148,7 @@ struct FileMenuHeadless : TempDir {
     void SetUp() override
     {
         TempDir::SetUp();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = {1024.0f, 640.0f};
-        io.DeltaTime = 1.0f / 30.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+        test::create_headless_imgui_context();
         panels.file.recent = gui::RecentFiles(dir / "recent.txt");
         state.set_viewport_size(64, 48);
         state.open_demo();

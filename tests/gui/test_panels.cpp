@@ -2,6 +2,7 @@
 // built and io.DisplaySize set, NewFrame / draw / Render, no window and no GPU. Checks that every
 // panel draws, that the viewport panel drives the state (render size, keys, picking) and that
 // the culling panel's switches reach it.
+#include "tests/gui/headless_imgui.h"
 #include "ui/gui/panels.h"
 
 #include <gtest/gtest.h>
@@ -17,15 +18,7 @@ using gui::InspectorState;
 struct NullBackend : ::testing::Test {
     void SetUp() override
     {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = {1024.0f, 640.0f};
-        io.DeltaTime = 1.0f / 30.0f;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+        test::create_headless_imgui_context();
         panels.viewport.upload = [this](const ui::Image& image) {
             ++uploads;
             last_upload = {image.width, image.height};

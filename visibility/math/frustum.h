@@ -22,13 +22,9 @@ struct Frustum {
     // (the "positive vertex" test). A box that straddles a corner may be reported visible.
     bool intersects(const Aabb& box) const
     {
-        for (const Plane& plane : planes) {
-            const glm::vec3 positive{plane.normal.x >= 0.0f ? box.max.x : box.min.x,
-                                     plane.normal.y >= 0.0f ? box.max.y : box.min.y,
-                                     plane.normal.z >= 0.0f ? box.max.z : box.min.z};
-            if (plane.distance(positive) < 0.0f)
+        for (const Plane& plane : planes)
+            if (entirely_behind(plane, box))
                 return false;
-        }
         return true;
     }
     // The same test against the four side planes only. They meet at the eye, so together they
@@ -38,15 +34,18 @@ struct Frustum {
     // tests for every box that is kept.
     bool intersects_sides(const Aabb& box) const
     {
-        for (int i = 0; i < 4; ++i) {
-            const Plane& plane = planes[size_t(i)];
-            const glm::vec3 positive{plane.normal.x >= 0.0f ? box.max.x : box.min.x,
-                                     plane.normal.y >= 0.0f ? box.max.y : box.min.y,
-                                     plane.normal.z >= 0.0f ? box.max.z : box.min.z};
-            if (plane.distance(positive) < 0.0f)
+        for (size_t i = 0; i < 4; ++i)
+            if (entirely_behind(planes[i], box))
                 return false;
-        }
         return true;
+    }
+    // The box's "positive vertex" (the corner farthest along the normal) is behind the plane.
+    static bool entirely_behind(const Plane& plane, const Aabb& box)
+    {
+        const glm::vec3 positive{plane.normal.x >= 0.0f ? box.max.x : box.min.x,
+                                 plane.normal.y >= 0.0f ? box.max.y : box.min.y,
+                                 plane.normal.z >= 0.0f ? box.max.z : box.min.z};
+        return plane.distance(positive) < 0.0f;
     }
     bool contains(const glm::vec3& p) const
     {
