@@ -37,6 +37,7 @@ constexpr int kStackWindings = 3;             // STACK_WINDINGS: windings per fr
 constexpr uint32_t kMaxSeparators = 64;       // MAX_SEPARATORS: cached planes per test per frame
 constexpr uint32_t kCancelCheckSteps = 1024;  // flow steps between looks at the cancel flag
 constexpr double kBaseWeight = 0.1;           // Full: share of the progress bar given to base vis
+constexpr double kPassageWeight = 0.1;        // Full: share given to the passages, when built
 
 enum PortalState : uint8_t { kNone = 0, kWorking = 1, kDone = 2, kAborted = 3 };
 
@@ -272,6 +273,7 @@ struct SeparatorCache {
 
 struct Frame {
     uint32_t leaf = 0;
+    uint32_t entry = 0; // the directed portal that led into leaf
     uint32_t cursor = 0, end = 0; // the leaf's outgoing portals still to try
     WRef source, pass;            // for the child frame: what is left of the source, the pass
     DPlane portalplane;           // for the child frame: the plane of the portal it came through
@@ -354,13 +356,55 @@ bool edge_separator(const WRef& a, const WRef& b, const int8_t* b_side, uint32_t
     return false;
 }
 
+// Passages (portal_vis.h, "Passages"): for directed portal a and the k-th portal b leaving a's
+// destination, the leaves a line through a and then b can reach, as a bit row.
+struct Passages {
+    size_t words = 0;
+    std::vector<size_t> first; // n + 1 offsets: a's pairs are [first[a], first[a + 1])
+    std::vector<uint64_t> rows;
+    const uint64_t* row(uint32_t a, size_t k) const { return &rows[(first[a] + k) * words]; }
+    uint64_t* row(uint32_t a, size_t k) { return &rows[(first[a] + k) * words]; }
+};
+
+// The passage rows' size: one row per (portal, portal leaving its destination) pair.
+size_t passage_bytes(const Graph& g)
+{
+    size_t pairs = 0;
+    for (const DirectedPortal& a : g.portals)
+        pairs += g.leaf_first[a.leaf + 1] - g.leaf_first[a.leaf];
+    return pairs * g.words * sizeof(uint64_t);
+}
+
+bool passages_fit(const Graph& g, size_t budget) { return !g.portals.empty() && passage_bytes(g) <= budget; }
+
+// Every portal a's mightsee narrowed to its destination plus what its passages reach: a line
+// from a into a leaf beyond its destination leaves the destination through some portal b.
+void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<uint64_t>& mightsee)
+{
+    const size_t words = g.words;
+    std::vector<uint64_t> reach(words);
+    for (uint32_t a = 0; a < uint32_t(g.portals.size()); ++a) {
+        std::fill(reach.begin(), reach.end(), 0);
+        bits::set(reach, g.portals[a].leaf);
+        for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k) {
+            const uint64_t* row = passages.row(a, k);
+            for (size_t w = 0; w < words; ++w)
+                reach[w] |= row[w];
+        }
+        uint64_t* might = &mightsee[size_t{a} * words];
+        for (size_t w = 0; w < words; ++w)
+            might[w] &= reach[w];
+    }
+}
+
 // One worker thread's flow state: the stack of frames (grown only when a walk goes deeper than
 // any before it), the visbits being built, which leaves are on the chain, clip scratch.
 class FlowWorker {
 public:
     FlowWorker(const Graph& g, int level)
         : g_(g), level_(level), vis_(g.words, 0), on_stack_(g.leaf_count, 0),
-          dists_(point_capacity() + 1), sides_(point_capacity() + 1), b_side_(point_capacity())
+          dists_(point_capacity() + 1), sides_(point_capacity() + 1), b_side_(point_capacity()),
+          ones_(g.words, ~uint64_t{0})
     {
     }
 
@@ -371,6 +415,9 @@ public:
     bool run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prune_row, const std::atomic<bool>& cancel);
 
     std::span<const uint64_t> vis() const { return vis_; }
+    void use_passages(const Passages* p) { passages_ = p; }
+    // The passage row of directed portal ai and the k-th portal leaving its destination.
+    void passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t>& mightsee, uint64_t* out);
     size_t leaf_recursions() const { return leaf_recursions_; }
     size_t bytes() const
     {
@@ -428,7 +475,7 @@ private:
     }
 
     // Enters `leaf` below the frame at depth_ (false when it is already on the chain).
-    bool enter(uint32_t leaf);
+    bool enter(uint32_t leaf, uint32_t entry);
 
     const Graph& g_;
     int level_;
@@ -438,9 +485,96 @@ private:
     std::vector<double> dists_;
     std::vector<uint8_t> sides_;
     std::vector<int8_t> b_side_; // tests 2 and 3: sides_to_plane of B
+    std::vector<DPlane> passage_planes_;
+    std::vector<uint32_t> passage_stack_;
     size_t depth_ = 0;
     size_t leaf_recursions_ = 0;
+    const Passages* passages_ = nullptr;
+    std::vector<uint64_t> ones_;
 };
+
+void FlowWorker::passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t>& mightsee, uint64_t* out)
+{
+    const size_t words = g_.words;
+    std::fill(out, out + words, 0);
+    const DirectedPortal& a = g_.portals[ai];
+    const uint32_t bi = g_.leaf_portals[g_.leaf_first[a.leaf] + k];
+    const DirectedPortal& b = g_.portals[bi];
+    if (bi == (ai ^ 1u))
+        return;
+    Frame& f = frame(0);
+    for (bool& used : f.slot_used)
+        used = false;
+    if (normals_equal(a.plane.normal, -b.plane.normal))
+        return;
+    const WRef bw = clip(portal_winding(bi), a.plane, f);
+    if (!bw)
+        return;
+    bits::set(std::span<uint64_t>(out, words), b.leaf);
+    const WRef aw = portal_winding(ai);
+    std::vector<DPlane>& planes = passage_planes_;
+    planes.clear();
+    if (level_ > 0) {
+        sides_to_plane(bw, a.plane, b_side_.data());
+        DPlane sep;
+        for (uint32_t i = 0; i < aw.count; ++i)
+            if (edge_separator(aw, bw, b_side_.data(), i, false, sep))
+                planes.push_back(sep);
+    }
+    if (level_ > 1) {
+        sides_to_plane(aw, b.plane, b_side_.data());
+        DPlane sep;
+        for (uint32_t i = 0; i < bw.count; ++i)
+            if (edge_separator(bw, aw, b_side_.data(), i, true, sep))
+                planes.push_back(sep);
+    }
+    const uint64_t* ma = &mightsee[size_t(ai) * words];
+    const uint64_t* mb = &mightsee[size_t(bi) * words];
+    // Flood from b's leaf through the portals a line through a and b can cross.
+    std::vector<uint32_t>& stack = passage_stack_;
+    stack.clear();
+    stack.push_back(b.leaf);
+    const std::span<uint64_t> row(out, words);
+    while (!stack.empty()) {
+        const uint32_t y = stack.back();
+        stack.pop_back();
+        for (uint32_t o = g_.leaf_first[y]; o < g_.leaf_first[y + 1]; ++o) {
+            const uint32_t ri = g_.leaf_portals[o];
+            const DirectedPortal& r = g_.portals[ri];
+            const uint32_t x = r.leaf;
+            if (bits::test(row, x) || !bits::test(std::span<const uint64_t>(ma, words), x) ||
+                !bits::test(std::span<const uint64_t>(mb, words), x))
+                continue;
+            // Spheres first: one dot product per plane.
+            bool behind = false, inside = true;
+            auto sphere = [&](const DPlane& pl) {
+                const double c = pl.distance(r.origin);
+                behind |= c < -r.radius;
+                inside &= c > r.radius;
+            };
+            sphere(a.plane);
+            sphere(b.plane);
+            for (size_t pl = 0; pl < planes.size() && !behind; ++pl)
+                sphere(planes[pl]);
+            if (behind)
+                continue;
+            bool seen = inside;
+            if (!seen) {
+                for (int s2 = 0; s2 < kStackWindings; ++s2)
+                    f.slot_used[s2] = s2 == bw.slot && bw.owner == &f;
+                WRef w = clip(portal_winding(ri), a.plane, f);
+                w = clip(w, b.plane, f);
+                for (size_t pl = 0; pl < planes.size() && w; ++pl)
+                    w = clip(w, planes[pl], f);
+                seen = bool(w);
+            }
+            if (!seen)
+                continue;
+            bits::set(row, x);
+            stack.push_back(x);
+        }
+    }
+}
 
 WRef FlowWorker::clip(const WRef& in, const DPlane& split, Frame& f)
 {
@@ -520,7 +654,7 @@ WRef FlowWorker::clip(const WRef& in, const DPlane& split, Frame& f)
     return result;
 }
 
-bool FlowWorker::enter(uint32_t leaf)
+bool FlowWorker::enter(uint32_t leaf, uint32_t entry)
 {
     if (on_stack_[leaf]) {
         ++leaf_recursions_;
@@ -529,6 +663,7 @@ bool FlowWorker::enter(uint32_t leaf)
     Frame& f = frame(depth_ + 1);
     ++depth_;
     f.leaf = leaf;
+    f.entry = entry;
     f.cursor = g_.leaf_first[leaf];
     f.end = g_.leaf_first[leaf + 1];
     f.separators[0].next_edge = f.separators[1].next_edge = 0;
@@ -551,7 +686,7 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
     head.portalplane = p.plane;
     std::copy(head_mightsee, head_mightsee + words, head.mightsee.begin());
     depth_ = 0;
-    enter(p.leaf);
+    enter(p.leaf, pi);
 
     uint32_t steps = 0;
     bool cancelled = false;
@@ -579,21 +714,28 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
         // Mightsee prune, then "nothing new": might = prev.mightsee & (q's visbits or mightsee).
         if (!bits::test(prev.mightsee, q.leaf))
             continue;
+        // Can't go out a coplanar face.
+        if (normals_equal(prev.portalplane.normal, -q.plane.normal))
+            continue;
+        const uint64_t* passage = passages_ ? passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]) : ones_.data();
+        if (!bits::test(std::span<const uint64_t>(passage, words), q.leaf))
+            continue;
         const uint64_t* test = prune_row(qi);
         if (test == nullptr) {
             cancelled = true;
             break;
         }
-        uint64_t more = 0;
-        for (size_t w = 0; w < words; ++w) {
-            f.mightsee[w] = prev.mightsee[w] & test[w];
-            more |= f.mightsee[w] & ~vis_[w];
+        {
+            size_t w = 0;
+            while (w < words && (prev.mightsee[w] & test[w] & passage[w] & ~vis_[w]) == 0)
+                ++w;
+            if (w == words)
+                continue;
         }
-        if (more == 0)
-            continue;
-        // Can't go out a coplanar face.
-        if (normals_equal(prev.portalplane.normal, -q.plane.normal))
-            continue;
+        const auto narrow = [&] {
+            for (size_t w = 0; w < words; ++w)
+                f.mightsee[w] = prev.mightsee[w] & test[w] & passage[w];
+        };
 
         // The part of the target in front of the source portal.
         WRef pass = clip(portal_winding(qi), head.portalplane, f);
@@ -604,7 +746,8 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
             f.source = prev.source;
             f.pass = pass;
             f.portalplane = q.plane;
-            enter(q.leaf);
+            narrow();
+            enter(q.leaf, qi);
             continue;
         }
         // The part of the target in front of the pass portal, and of the source behind the target.
@@ -660,7 +803,8 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
         f.source = source;
         f.pass = pass;
         f.portalplane = q.plane;
-        enter(q.leaf);
+        narrow();
+        enter(q.leaf, qi);
     }
     if (cancelled) {
         for (; depth_ > 0; --depth_)
@@ -775,6 +919,7 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
         state[i].store(kNone, std::memory_order_relaxed);
     std::atomic<bool> cancel{false}, user_cancel{false};
     size_t worker_bytes = 0;
+    size_t passage_row_bytes = 0;
     std::mutex worker_bytes_mutex;
 
     bool base_done = false, flow_started = false;
@@ -819,6 +964,42 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
         uint64_t total_weight = 0;
         for (uint32_t i = 0; i < n; ++i)
             total_weight += nummightsee[i];
+        // Passages, then every portal's mightsee narrowed to what its passages reach.
+        Passages passages;
+        const bool use_passages = passages_fit(g, params.passage_budget_bytes);
+        if (use_passages) {
+            const auto passage_start = Clock::now();
+            size_t pairs = 0;
+            passages.words = words;
+            passages.first.resize(size_t{n} + 1, 0);
+            for (uint32_t a = 0; a < n; ++a) {
+                const uint32_t leaf = g.portals[a].leaf;
+                pairs += g.leaf_first[leaf + 1] - g.leaf_first[leaf];
+                passages.first[a + 1] = pairs;
+            }
+            passages.rows.assign(pairs * words, 0);
+            std::atomic<uint32_t> next_portal{0}, portals_done{0};
+            run_parallel(
+                rep.threads,
+                [&](unsigned) {
+                    FlowWorker worker(g, level);
+                    while (!cancel.load(std::memory_order_relaxed)) {
+                        const uint32_t a = next_portal.fetch_add(1);
+                        if (a >= n)
+                            break;
+                        for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k)
+                            worker.passage_row(a, uint32_t(k), mightsee, passages.row(a, k));
+                        portals_done.fetch_add(1, std::memory_order_relaxed);
+                    }
+                },
+                cancel, user_cancel, params.progress,
+                [&] { return kBaseWeight + kPassageWeight * double(portals_done.load()) / double(std::max(n, 1u)); });
+            if (!cancel.load())
+                narrow_mightsee(g, passages, mightsee);
+            rep.passage_pairs = pairs;
+            passage_row_bytes = passages.rows.capacity() * sizeof(uint64_t) + passages.first.capacity() * sizeof(size_t);
+            rep.passage_seconds = std::chrono::duration<double>(Clock::now() - passage_start).count();
+        }
         std::atomic<uint32_t> next{0};
         std::atomic<uint64_t> done_weight{0};
 
@@ -826,6 +1007,8 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
             rep.threads,
             [&](unsigned) {
                 FlowWorker worker(g, level);
+                if (use_passages)
+                    worker.use_passages(&passages);
                 uint64_t waited = 0;
                 while (!cancel.load(std::memory_order_relaxed)) {
                     const uint32_t r = next.fetch_add(1);
@@ -879,7 +1062,8 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
             },
             cancel, user_cancel, params.progress,
             [&] {
-                return kBaseWeight + (1.0 - kBaseWeight) * double(done_weight.load()) /
+                const double before = kBaseWeight + (use_passages ? kPassageWeight : 0.0);
+                return before + (1.0 - before) * double(done_weight.load()) /
                                          double(std::max<uint64_t>(total_weight, 1));
             });
     }
@@ -910,7 +1094,7 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
     rep.saw_into_own_region = saw_self;
     rep.mean_visible = region_count == 0 ? 0.0 : double(total_visible) / double(region_count);
     rep.peak_bytes_estimate = g.bytes() + (mightsee.capacity() + visbits.capacity()) * sizeof(uint64_t) +
-                              size_t{n} * (sizeof(uint32_t) * 3 + 1) + worker_bytes + pvs.memory_bytes() +
+                              size_t{n} * (sizeof(uint32_t) * 3 + 1) + worker_bytes + passage_row_bytes + pvs.memory_bytes() +
                               size_t{region_count} * sizeof(uint32_t) * rep.threads;
     rep.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (params.progress && !rep.cancelled)

@@ -35,6 +35,21 @@
 // was clipped away).
 // A leaf already on the chain is not entered again (counted in VisReport::leaf_recursions).
 //
+// Passages (Method::Full; after q3map's passage vis). Before the flow, for every directed
+// portal a and every portal b leaving a's destination, the leaves a line through a and then b
+// can reach: a flood from b's destination through the portals that survive a's plane, b's plane
+// and the separating planes between a and b' (b clipped to the front of a; test 0 at level >= 1,
+// test 1 mirrored at level >= 2), restricted to a.mightsee & b.mightsee, bounding spheres first.
+// A line crossing a, b, then r1..rk crosses each r_i in front of a and b and inside the
+// separators, so every leaf it reaches is in the flood: the rows are conservative. The flow
+// then ANDs the row of (the portal it came in by, the target) into the child's mightsee, and
+// a target whose own leaf is not in that row is skipped; each portal's mightsee is first
+// narrowed to its destination plus its passages' rows. These only remove branches that
+// could not add a leaf, so the rows on e1m1, e1m2 and start are bit-identical to the flow
+// without them, at about half the time (docs/performance.md). They cost one row per pair
+// (pairs = sum over directed portals of the portals leaving their destination; 55 000 rows of
+// 19 words on e1m1, 8 MB) and are skipped when that exceeds VisParams::passage_budget_bytes.
+//
 // Aggregation (§3.5): a region sees the union of its outgoing directed portals' visbits, plus
 // itself (VisReport::saw_into_own_region counts regions that already saw themselves, ericw's
 // "portals saw into leaf" warning).
@@ -78,7 +93,7 @@
 // ever differ: a point whose distance to a candidate plane is ±ON_EPSILON to within round-off.
 //
 // Memory. Two bit rows of region_count bits per directed portal (mightsee, visbits; 64-bit
-// words), the portals' points in double, and per thread a stack of frames, grown only when a
+// words), the passage rows (above), the portals' points in double, and per thread a stack of frames, grown only when a
 // walk goes deeper than before (a frame holds three fixed 24-point windings and the cached
 // separators, ericw's pstack_t): no allocation inside the walk otherwise.
 #pragma once
@@ -97,6 +112,8 @@ struct VisParams {
     Method method = Method::Full;
     int level = 4;        // Full: separator test level 0..4 (clamped), ericw's default 4
     unsigned threads = 0; // 0 = std::thread::hardware_concurrency()
+    // Full: passages are built when their rows take at most this many bytes (0 = never).
+    size_t passage_budget_bytes = size_t{64} << 20;
     // Called on the calling thread with the fraction done in [0, 1]; return false to cancel.
     std::function<bool(double fraction)> progress;
 };
@@ -113,6 +130,8 @@ struct VisReport {
     size_t saw_into_own_region = 0; // regions whose portals' visbits held the region itself
     size_t leaf_recursions = 0;    // Full: walks that met a region already on their chain
     double wait_seconds = 0.0;     // Full: time worker threads spent waiting for an older portal
+    size_t passage_pairs = 0;      // Full: passages built (0: none, over the budget)
+    double passage_seconds = 0.0;  // Full: of the bake's time, building them
 };
 
 // Portals older than this many ranks are used for pruning (see Determinism above). Part of the
