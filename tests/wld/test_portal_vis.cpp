@@ -466,6 +466,38 @@ TEST(PortalVis, FullIsTheSameForOneAndTwoThreadsOnARealMap)
                 one_report.mean_visible);
 }
 
+// Passages (portal_vis.h) only cut flow branches that could not add a leaf: without them the
+// flow must give the same rows (an independent run of the unpruned flow, not a stored answer).
+TEST(PortalVis, PassagesChangeNoRowOnARealMap)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    const std::string map = "quake/end.bsp";
+#else
+    const std::string map = "quake/e1m2.bsp";
+#endif
+    SHARED_DATA_OR_SKIP(path, map);
+    const QuakeBake* b = quake_bake(map);
+    ASSERT_NE(b, nullptr);
+    EXPECT_GT(b->full_report.passage_pairs, 0u) << "the default budget should fit a Quake map's passages";
+    VisParams params;
+    params.threads = 2;
+    params.passage_budget_bytes = 0;
+    VisReport report;
+    const Rows unpruned = rows_of(bake_portal_vis(b->portals, b->regions, params, &report));
+    EXPECT_EQ(report.passage_pairs, 0u);
+    size_t only_pruned = 0, only_unpruned = 0;
+    for (uint32_t r = 0; r < b->regions; ++r)
+        for (size_t w = 0; w < unpruned[r].size(); ++w) {
+            only_pruned += size_t(std::popcount(b->full[r][w] & ~unpruned[r][w]));
+            only_unpruned += size_t(std::popcount(unpruned[r][w] & ~b->full[r][w]));
+        }
+    EXPECT_EQ(only_pruned, 0u);
+    EXPECT_EQ(only_unpruned, 0u);
+    std::printf("[ %-7s ] Full with passages %.3f s (%zu pairs, %.3f s to build), without %.3f s\n",
+                test::param_name(map).c_str(), b->full_report.seconds, b->full_report.passage_pairs,
+                b->full_report.passage_seconds, report.seconds);
+}
+
 void expect_only_self(const Pvs& pvs, uint32_t n)
 {
     ASSERT_EQ(pvs.region_count(), n);

@@ -45,8 +45,9 @@
 // then ANDs the row of (the portal it came in by, the target) into the child's mightsee, and
 // a target whose own leaf is not in that row is skipped; each portal's mightsee is first
 // narrowed to its destination plus its passages' rows. These only remove branches that
-// could not add a leaf, so the rows on e1m1, e1m2 and start are bit-identical to the flow
-// without them, at about half the time (docs/performance.md). They cost one row per pair
+// could not add a leaf: on all six maps in ../shared/data/quake the rows are bit-identical to
+// the flow without them (tests/wld/test_portal_vis.cpp checks one), at about half the time
+// (docs/performance.md). They cost one row per pair
 // (pairs = sum over directed portals of the portals leaving their destination; 55 000 rows of
 // 19 words on e1m1, 8 MB) and are skipped when that exceeds VisParams::passage_budget_bytes.
 //
