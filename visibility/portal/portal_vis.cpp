@@ -277,7 +277,8 @@ struct Frame {
     uint32_t cursor = 0, end = 0; // the leaf's outgoing portals still to try
     WRef source, pass;            // for the child frame: what is left of the source, the pass
     DPlane portalplane;           // for the child frame: the plane of the portal it came through
-    std::vector<uint64_t> mightsee;
+    std::vector<uint64_t> mightsee; // for the child frame; zero outside words [lo, hi)
+    uint32_t lo = 0, hi = 0;
     bool slot_used[kStackWindings] = {};
     SeparatorCache separators[2];
     Vec slots[kStackWindings][kStackPoints];
@@ -357,25 +358,32 @@ bool edge_separator(const WRef& a, const WRef& b, const int8_t* b_side, uint32_t
 }
 
 // Passages (portal_vis.h, "Passages"): for directed portal a and the k-th portal b leaving a's
-// destination, the leaves a line through a and then b can reach, as a bit row.
-struct Passages {
-    size_t words = 0;
-    std::vector<size_t> first; // n + 1 offsets: a's pairs are [first[a], first[a + 1])
-    std::vector<uint64_t> rows;
-    const uint64_t* row(uint32_t a, size_t k) const { return &rows[(first[a] + k) * words]; }
-    uint64_t* row(uint32_t a, size_t k) { return &rows[(first[a] + k) * words]; }
+// destination, the leaves a line through a and then b can reach. A row keeps only its words
+// [lo, hi) (the others are zero): such a line reaches a few nearby leaves, and BSP leaf numbers
+// follow the tree, so on e1m1 a row spans 5 of 19 words.
+struct PassageRow {
+    size_t offset = 0; // words [lo, hi) are Passages::words[offset .. offset + hi - lo)
+    uint32_t lo = 0, hi = 0;
 };
 
-// The passage rows' size: one row per (portal, portal leaving its destination) pair.
-size_t passage_bytes(const Graph& g)
-{
-    size_t pairs = 0;
-    for (const DirectedPortal& a : g.portals)
-        pairs += g.leaf_first[a.leaf + 1] - g.leaf_first[a.leaf];
-    return pairs * g.words * sizeof(uint64_t);
-}
+struct Passages {
+    std::vector<size_t> first; // n + 1 offsets: a's pairs are [first[a], first[a + 1])
+    std::vector<PassageRow> rows;
+    std::vector<uint64_t> words;
 
-bool passages_fit(const Graph& g, size_t budget) { return !g.portals.empty() && passage_bytes(g) <= budget; }
+    const PassageRow& row(uint32_t a, size_t k) const { return rows[first[a] + k]; }
+    uint64_t word(const PassageRow& r, size_t w) const { return words[r.offset + (w - r.lo)]; }
+    bool test(const PassageRow& r, uint32_t leaf) const
+    {
+        const uint32_t w = leaf >> 6;
+        return w >= r.lo && w < r.hi && ((word(r, w) >> (leaf & 63)) & 1u) != 0;
+    }
+    size_t bytes() const
+    {
+        return first.capacity() * sizeof(size_t) + rows.capacity() * sizeof(PassageRow) +
+               words.capacity() * sizeof(uint64_t);
+    }
+};
 
 // Every portal a's mightsee narrowed to its destination plus what its passages reach: a line
 // from a into a leaf beyond its destination leaves the destination through some portal b.
@@ -387,9 +395,9 @@ void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<uint6
         std::fill(reach.begin(), reach.end(), 0);
         bits::set(reach, g.portals[a].leaf);
         for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k) {
-            const uint64_t* row = passages.row(a, k);
-            for (size_t w = 0; w < words; ++w)
-                reach[w] |= row[w];
+            const PassageRow& row = passages.row(a, k);
+            for (size_t w = row.lo; w < row.hi; ++w)
+                reach[w] |= passages.word(row, w);
         }
         uint64_t* might = &mightsee[size_t{a} * words];
         for (size_t w = 0; w < words; ++w)
@@ -685,6 +693,8 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
     head.pass = {};
     head.portalplane = p.plane;
     std::copy(head_mightsee, head_mightsee + words, head.mightsee.begin());
+    head.lo = 0;
+    head.hi = uint32_t(words);
     depth_ = 0;
     enter(p.leaf, pi);
 
@@ -712,29 +722,40 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
             used = false;
 
         // Mightsee prune, then "nothing new": might = prev.mightsee & (q's visbits or mightsee).
-        if (!bits::test(prev.mightsee, q.leaf))
+        const uint32_t leaf_word = q.leaf >> 6;
+        if (leaf_word < prev.lo || leaf_word >= prev.hi || !bits::test(prev.mightsee, q.leaf))
             continue;
         // Can't go out a coplanar face.
         if (normals_equal(prev.portalplane.normal, -q.plane.normal))
             continue;
-        const uint64_t* passage = passages_ ? passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]) : ones_.data();
-        if (!bits::test(std::span<const uint64_t>(passage, words), q.leaf))
-            continue;
+        // The passage (the portal into this leaf, q): q's own leaf, then the words it spans.
+        uint32_t lo = prev.lo, hi = prev.hi;
+        const uint64_t* passage = ones_.data(); // indexed from lo
+        if (passages_ != nullptr) {
+            const PassageRow& row = passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]);
+            if (!passages_->test(row, q.leaf))
+                continue;
+            lo = std::max(lo, row.lo);
+            hi = std::min(hi, row.hi);
+            passage = &passages_->words[row.offset + (lo - row.lo)];
+        }
         const uint64_t* test = prune_row(qi);
         if (test == nullptr) {
             cancelled = true;
             break;
         }
         {
-            size_t w = 0;
-            while (w < words && (prev.mightsee[w] & test[w] & passage[w] & ~vis_[w]) == 0)
+            uint32_t w = lo;
+            while (w < hi && (prev.mightsee[w] & test[w] & passage[w - lo] & ~vis_[w]) == 0)
                 ++w;
-            if (w == words)
+            if (w >= hi)
                 continue;
         }
         const auto narrow = [&] {
-            for (size_t w = 0; w < words; ++w)
-                f.mightsee[w] = prev.mightsee[w] & test[w] & passage[w];
+            for (uint32_t w = lo; w < hi; ++w)
+                f.mightsee[w] = prev.mightsee[w] & test[w] & passage[w - lo];
+            f.lo = lo;
+            f.hi = hi;
         };
 
         // The part of the target in front of the source portal.
@@ -894,6 +915,79 @@ void run_parallel(unsigned threads, Worker&& worker, std::atomic<bool>& cancel, 
         std::rethrow_exception(error);
 }
 
+// Builds every pair's passage row with `threads` workers, then narrows each portal's mightsee
+// to its passages. False, with `out` empty, when there are no portals, when the rows would take
+// more than `budget` bytes (decided by their total size alone, so not by timing), or when
+// cancelled.
+bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, size_t budget, unsigned threads,
+                    std::atomic<bool>& cancel, std::atomic<bool>& user_cancel,
+                    const std::function<bool(double)>& progress, Passages& out)
+{
+    const auto n = uint32_t(g.portals.size());
+    if (n == 0)
+        return false;
+    out.first.assign(size_t{n} + 1, 0);
+    for (uint32_t a = 0; a < n; ++a) {
+        const uint32_t leaf = g.portals[a].leaf;
+        out.first[a + 1] = out.first[a] + (g.leaf_first[leaf + 1] - g.leaf_first[leaf]);
+    }
+    const size_t pairs = out.first[n];
+    const size_t fixed_bytes = out.first.size() * sizeof(size_t) + pairs * sizeof(PassageRow);
+    if (fixed_bytes > budget) {
+        out = {};
+        return false;
+    }
+    out.rows.assign(pairs, {});
+    const size_t word_budget = (budget - fixed_bytes) / sizeof(uint64_t);
+    std::atomic<size_t> total_words{0};
+    std::atomic<bool> over_budget{false};
+    std::mutex words_mutex;
+    std::atomic<uint32_t> next_portal{0}, portals_done{0};
+    run_parallel(
+        threads,
+        [&](unsigned) {
+            FlowWorker worker(g, level);
+            std::vector<uint64_t> dense(g.words), packed;
+            while (!cancel.load(std::memory_order_relaxed) && !over_budget.load(std::memory_order_relaxed)) {
+                const uint32_t a = next_portal.fetch_add(1);
+                if (a >= n)
+                    break;
+                packed.clear();
+                for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k) {
+                    worker.passage_row(a, uint32_t(k), mightsee, dense.data());
+                    uint32_t lo = 0, hi = uint32_t(g.words);
+                    while (lo < hi && dense[lo] == 0)
+                        ++lo;
+                    while (hi > lo && dense[hi - 1] == 0)
+                        --hi;
+                    out.rows[out.first[a] + k] = PassageRow{packed.size(), lo, hi};
+                    packed.insert(packed.end(), dense.begin() + lo, dense.begin() + hi);
+                }
+                if (total_words.fetch_add(packed.size()) + packed.size() > word_budget) {
+                    over_budget.store(true);
+                    break;
+                }
+                size_t base = 0;
+                {
+                    std::lock_guard lock(words_mutex);
+                    base = out.words.size();
+                    out.words.insert(out.words.end(), packed.begin(), packed.end());
+                }
+                for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k)
+                    out.rows[out.first[a] + k].offset += base;
+                portals_done.fetch_add(1, std::memory_order_relaxed);
+            }
+        },
+        cancel, user_cancel, progress,
+        [&] { return kBaseWeight + kPassageWeight * double(portals_done.load()) / double(n); });
+    if (cancel.load() || over_budget.load()) {
+        out = {};
+        return false;
+    }
+    narrow_mightsee(g, out, mightsee);
+    return true;
+}
+
 } // namespace
 
 Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisParams& params, VisReport* report)
@@ -966,40 +1060,13 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
             total_weight += nummightsee[i];
         // Passages, then every portal's mightsee narrowed to what its passages reach.
         Passages passages;
-        const bool use_passages = passages_fit(g, params.passage_budget_bytes);
+        const bool use_passages = build_passages(g, level, mightsee, params.passage_budget_bytes, rep.threads,
+                                                 cancel, user_cancel, params.progress, passages);
         if (use_passages) {
-            const auto passage_start = Clock::now();
-            size_t pairs = 0;
-            passages.words = words;
-            passages.first.resize(size_t{n} + 1, 0);
-            for (uint32_t a = 0; a < n; ++a) {
-                const uint32_t leaf = g.portals[a].leaf;
-                pairs += g.leaf_first[leaf + 1] - g.leaf_first[leaf];
-                passages.first[a + 1] = pairs;
-            }
-            passages.rows.assign(pairs * words, 0);
-            std::atomic<uint32_t> next_portal{0}, portals_done{0};
-            run_parallel(
-                rep.threads,
-                [&](unsigned) {
-                    FlowWorker worker(g, level);
-                    while (!cancel.load(std::memory_order_relaxed)) {
-                        const uint32_t a = next_portal.fetch_add(1);
-                        if (a >= n)
-                            break;
-                        for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k)
-                            worker.passage_row(a, uint32_t(k), mightsee, passages.row(a, k));
-                        portals_done.fetch_add(1, std::memory_order_relaxed);
-                    }
-                },
-                cancel, user_cancel, params.progress,
-                [&] { return kBaseWeight + kPassageWeight * double(portals_done.load()) / double(std::max(n, 1u)); });
-            if (!cancel.load())
-                narrow_mightsee(g, passages, mightsee);
-            rep.passage_pairs = pairs;
-            passage_row_bytes = passages.rows.capacity() * sizeof(uint64_t) + passages.first.capacity() * sizeof(size_t);
-            rep.passage_seconds = std::chrono::duration<double>(Clock::now() - passage_start).count();
+            rep.passage_pairs = passages.rows.size();
+            passage_row_bytes = passages.bytes();
         }
+        rep.passage_seconds = std::chrono::duration<double>(Clock::now() - start).count() - rep.base_seconds;
         std::atomic<uint32_t> next{0};
         std::atomic<uint64_t> done_weight{0};
 

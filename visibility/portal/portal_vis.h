@@ -47,9 +47,11 @@
 // narrowed to its destination plus its passages' rows. These only remove branches that
 // could not add a leaf: on all six maps in ../shared/data/quake the rows are bit-identical to
 // the flow without them (tests/wld/test_portal_vis.cpp checks one), at about half the time
-// (docs/performance.md). They cost one row per pair
-// (pairs = sum over directed portals of the portals leaving their destination; 55 000 rows of
-// 19 words on e1m1, 8 MB) and are skipped when that exceeds VisParams::passage_budget_bytes.
+// (docs/performance.md). They cost one row per pair (pairs = sum over directed portals of
+// the portals leaving their destination), kept as the span of words that hold set bits (on
+// e1m1 55 000 pairs spanning 5 of 19 words on average, about 3.5 MB); when the rows would
+// exceed VisParams::passage_budget_bytes the flow runs without them (a decision that depends
+// on their total size only, so the result stays deterministic).
 //
 // Aggregation (§3.5): a region sees the union of its outgoing directed portals' visbits, plus
 // itself (VisReport::saw_into_own_region counts regions that already saw themselves, ericw's
