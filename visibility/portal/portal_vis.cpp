@@ -361,26 +361,33 @@ bool edge_separator(const WRef& a, const WRef& b, const int8_t* b_side, uint32_t
 // destination, the leaves a line through a and then b can reach. A row keeps only its words
 // [lo, hi) (the others are zero): such a line reaches a few nearby leaves, and BSP leaf numbers
 // follow the tree, so on e1m1 a row spans 5 of 19 words.
+// Stored as a header word (lo in the low half, hi in the high half) followed by the words, so
+// that reading a row touches one place.
 struct PassageRow {
-    size_t offset = 0; // words [lo, hi) are Passages::words[offset .. offset + hi - lo)
     uint32_t lo = 0, hi = 0;
+    const uint64_t* words = nullptr; // word w of the row, for w in [lo, hi), is words[w - lo]
+
+    bool test(uint32_t leaf) const
+    {
+        const uint32_t w = leaf >> 6;
+        return w >= lo && w < hi && ((words[w - lo] >> (leaf & 63)) & 1u) != 0;
+    }
 };
 
 struct Passages {
-    std::vector<size_t> first; // n + 1 offsets: a's pairs are [first[a], first[a + 1])
-    std::vector<PassageRow> rows;
+    std::vector<size_t> first;   // n + 1 offsets: a's pairs are [first[a], first[a + 1])
+    std::vector<uint32_t> start; // per pair: the index of its header in `words`
     std::vector<uint64_t> words;
 
-    const PassageRow& row(uint32_t a, size_t k) const { return rows[first[a] + k]; }
-    uint64_t word(const PassageRow& r, size_t w) const { return words[r.offset + (w - r.lo)]; }
-    bool test(const PassageRow& r, uint32_t leaf) const
+    PassageRow row(uint32_t a, size_t k) const
     {
-        const uint32_t w = leaf >> 6;
-        return w >= r.lo && w < r.hi && ((word(r, w) >> (leaf & 63)) & 1u) != 0;
+        const uint64_t* header = &words[start[first[a] + k]];
+        return {uint32_t(*header), uint32_t(*header >> 32), header + 1};
     }
+    size_t pairs() const { return start.size(); }
     size_t bytes() const
     {
-        return first.capacity() * sizeof(size_t) + rows.capacity() * sizeof(PassageRow) +
+        return first.capacity() * sizeof(size_t) + start.capacity() * sizeof(uint32_t) +
                words.capacity() * sizeof(uint64_t);
     }
 };
@@ -395,9 +402,9 @@ void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<uint6
         std::fill(reach.begin(), reach.end(), 0);
         bits::set(reach, g.portals[a].leaf);
         for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k) {
-            const PassageRow& row = passages.row(a, k);
+            const PassageRow row = passages.row(a, k);
             for (size_t w = row.lo; w < row.hi; ++w)
-                reach[w] |= passages.word(row, w);
+                reach[w] |= row.words[w - row.lo];
         }
         uint64_t* might = &mightsee[size_t{a} * words];
         for (size_t w = 0; w < words; ++w)
@@ -732,12 +739,12 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
         uint32_t lo = prev.lo, hi = prev.hi;
         const uint64_t* passage = ones_.data(); // indexed from lo
         if (passages_ != nullptr) {
-            const PassageRow& row = passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]);
-            if (!passages_->test(row, q.leaf))
+            const PassageRow row = passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]);
+            if (!row.test(q.leaf))
                 continue;
             lo = std::max(lo, row.lo);
             hi = std::min(hi, row.hi);
-            passage = &passages_->words[row.offset + (lo - row.lo)];
+            passage = row.words + (lo - row.lo);
         }
         const uint64_t* test = prune_row(qi);
         if (test == nullptr) {
@@ -932,13 +939,14 @@ bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, 
         out.first[a + 1] = out.first[a] + (g.leaf_first[leaf + 1] - g.leaf_first[leaf]);
     }
     const size_t pairs = out.first[n];
-    const size_t fixed_bytes = out.first.size() * sizeof(size_t) + pairs * sizeof(PassageRow);
+    const size_t fixed_bytes = out.first.size() * sizeof(size_t) + pairs * sizeof(uint32_t);
     if (fixed_bytes > budget) {
         out = {};
         return false;
     }
-    out.rows.assign(pairs, {});
-    const size_t word_budget = (budget - fixed_bytes) / sizeof(uint64_t);
+    out.start.assign(pairs, 0);
+    // (uint32_t indices into `words`)
+    const size_t word_budget = std::min<size_t>((budget - fixed_bytes) / sizeof(uint64_t), UINT32_MAX);
     std::atomic<size_t> total_words{0};
     std::atomic<bool> over_budget{false};
     std::mutex words_mutex;
@@ -960,7 +968,8 @@ bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, 
                         ++lo;
                     while (hi > lo && dense[hi - 1] == 0)
                         --hi;
-                    out.rows[out.first[a] + k] = PassageRow{packed.size(), lo, hi};
+                    out.start[out.first[a] + k] = uint32_t(packed.size()); // made absolute below
+                    packed.push_back(uint64_t{lo} | uint64_t{hi} << 32);
                     packed.insert(packed.end(), dense.begin() + lo, dense.begin() + hi);
                 }
                 if (total_words.fetch_add(packed.size()) + packed.size() > word_budget) {
@@ -974,7 +983,7 @@ bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, 
                     out.words.insert(out.words.end(), packed.begin(), packed.end());
                 }
                 for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k)
-                    out.rows[out.first[a] + k].offset += base;
+                    out.start[out.first[a] + k] += uint32_t(base);
                 portals_done.fetch_add(1, std::memory_order_relaxed);
             }
         },
@@ -1063,7 +1072,7 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
         const bool use_passages = build_passages(g, level, mightsee, params.passage_budget_bytes, rep.threads,
                                                  cancel, user_cancel, params.progress, passages);
         if (use_passages) {
-            rep.passage_pairs = passages.rows.size();
+            rep.passage_pairs = passages.pairs();
             passage_row_bytes = passages.bytes();
         }
         rep.passage_seconds = std::chrono::duration<double>(Clock::now() - start).count() - rep.base_seconds;
