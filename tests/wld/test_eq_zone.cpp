@@ -5,6 +5,7 @@
 //  - bad archives fail with FileError only, naming member, fragment and offset;
 //  - what the writer cannot express is refused with std::invalid_argument.
 #include "tests/support/test_data.h"
+#include "tests/wld/wld_test_bytes.h"
 #include "visibility/bit_row.h"
 #include "visibility/file_error.h"
 #include "visibility/region_lookup.h"
@@ -517,7 +518,7 @@ FragmentAt find_fragment(const std::vector<uint8_t>& wld, uint32_t type, int nth
     throw std::logic_error("no such fragment");
 }
 
-void put_u32(std::vector<uint8_t>& bytes, uint64_t at, uint32_t value) { std::memcpy(&bytes[at], &value, 4); }
+using eq::wld_test::put_u32;
 
 // Loads, expecting a FileError in the zone WLD at `offset` whose reason names the fragment.
 void expect_wld_error(const std::vector<uint8_t>& s3d, uint32_t fragment, uint64_t offset, const std::string& text)

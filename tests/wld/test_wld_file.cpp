@@ -4,6 +4,7 @@
 // tables (§2.1, §2.3, §3.1, §4.1, §4.3, §5.1) with every field checked, bad input that must
 // throw FileError naming the fragment and the problem, and a truncation / random-change sweep
 // (run under ASan + UBSan by tests/run-all.sh).
+#include "tests/wld/wld_test_bytes.h"
 #include "visibility/bit_row.h"
 #include "visibility/file_error.h"
 #include "visibility/zone.h"
@@ -12,61 +13,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <map>
-#include <random>
 
 namespace pvs::eq {
 namespace {
 
-using Bytes = std::vector<uint8_t>;
-
-// Little-endian byte assembly, independent of the code under test.
-struct Builder {
-    Bytes out;
-    size_t size() const { return out.size(); }
-    Builder& u8(uint8_t v)
-    {
-        out.push_back(v);
-        return *this;
-    }
-    Builder& u16(uint16_t v) { return u8(uint8_t(v)).u8(uint8_t(v >> 8)); }
-    Builder& u32(uint32_t v) { return u16(uint16_t(v)).u16(uint16_t(v >> 16)); }
-    Builder& i32(int32_t v) { return u32(uint32_t(v)); }
-    Builder& f32(float v)
-    {
-        uint32_t bits;
-        std::memcpy(&bits, &v, 4);
-        return u32(bits);
-    }
-    Builder& raw(const Bytes& bytes)
-    {
-        out.insert(out.end(), bytes.begin(), bytes.end());
-        return *this;
-    }
-    Builder& pad4()
-    {
-        while (out.size() % 4)
-            out.push_back(0);
-        return *this;
-    }
-};
-
-// §2.2 with the key written out here again, so the tests do not trust wld_xor.
-Bytes spec_xor(const std::string& decoded)
-{
-    static const uint8_t key[8] = {0x95, 0x3A, 0xC5, 0x2A, 0x95, 0x7A, 0x95, 0x6A};
-    Bytes out(decoded.begin(), decoded.end());
-    for (size_t i = 0; i < out.size(); ++i)
-        out[i] ^= key[i % 8];
-    return out;
-}
-
-Bytes padded(Bytes bytes)
-{
-    bytes.resize((bytes.size() + 3) / 4 * 4, 0);
-    return bytes;
-}
+using namespace wld_test;
 
 std::vector<uint32_t> set_bits(std::span<const uint64_t> row)
 {
@@ -255,12 +207,11 @@ struct HandMade {
 HandMade build_hand_made()
 {
     HandMade h;
-    h.strings.assign(1, '\0');
-    for (const char* s : {"MESH_DMSPRITEDEF", "WORLD_TREE", "R000001", "R000002", "WT_ZONE", "Z0000_ZONE"}) {
-        h.refs[s] = -int32_t(h.strings.size());
-        h.strings += s;
-        h.strings.push_back('\0');
-    }
+    SpecStrings strings;
+    for (const char* s : {"MESH_DMSPRITEDEF", "WORLD_TREE", "R000001", "R000002", "WT_ZONE", "Z0000_ZONE"})
+        strings.add(s);
+    h.strings = strings.decoded;
+    h.refs = strings.refs;
     std::map<std::string, uint64_t> rel; // body-relative offsets, made absolute below
     std::vector<std::pair<std::string, uint32_t>> rel_fragment;
     const auto mark = [&](const char* key, uint32_t fragment, const Builder& b) {
@@ -354,23 +305,12 @@ HandMade build_hand_made()
         h.bodies.push_back(b.out);
     }
 
-    // §2.1 header, §2.2 hash, §2.3 fragments, trailer
-    const Bytes hash = padded(spec_xor(h.strings));
     const uint32_t types[6] = {kWldMesh, kWldBspTree, kWldRegion, kWldRegion, kWldRegionFlag, kWldRegionFlag};
-    size_t max_size = 0;
-    for (const Bytes& body : h.bodies)
-        max_size = std::max(max_size, padded(body).size());
-    Builder f;
-    f.u32(0x54503D02).u32(0x00015500).u32(6).u32(2).u32(uint32_t(max_size + 8)).u32(uint32_t(hash.size())).u32(6);
-    f.raw(hash);
-    for (size_t i = 0; i < 6; ++i) {
-        h.at["fragment" + std::to_string(i + 1)] = f.size();
-        f.u32(uint32_t(padded(h.bodies[i]).size())).u32(types[i]);
-        h.body_at.push_back(f.size());
-        f.raw(padded(h.bodies[i]));
-    }
-    f.u32(0xFFFFFFFF);
-    h.file = f.out;
+    SpecFile f = spec_wld(0x00015500, h.strings, types, h.bodies);
+    h.file = std::move(f.file);
+    h.body_at = std::move(f.body_at);
+    for (size_t i = 0; i < 6; ++i)
+        h.at["fragment" + std::to_string(i + 1)] = f.header_at[i];
     for (const auto& [key, fragment] : rel_fragment)
         h.at[key] = h.field(fragment, rel[key]);
     return h;
@@ -611,32 +551,7 @@ TEST(WldWriters, RejectUnwritableData)
 // ---------------------------------------------------------------------------------------------
 // Bad input: FileError naming the file, the absolute offset, the fragment and the problem
 
-// Runs `parse` on the changed file and checks the FileError.
-template <class Parse>
-void expect_error(const Bytes& bytes, Parse&& parse, uint64_t offset, std::initializer_list<const char*> phrases)
-{
-    try {
-        parse(bytes);
-        ADD_FAILURE() << "no FileError; expected one with: " << *phrases.begin();
-    } catch (const FileError& e) {
-        EXPECT_EQ(e.file(), "bad.wld");
-        EXPECT_EQ(e.offset(), offset) << e.what();
-        for (const char* phrase : phrases)
-            EXPECT_NE(e.reason().find(phrase), std::string::npos) << "'" << phrase << "' not in: " << e.reason();
-    }
-}
-
-void put_u32(Bytes& bytes, uint64_t at, uint32_t value)
-{
-    std::memcpy(bytes.data() + at, &value, 4);
-}
-
 const auto kParseFile = [](const Bytes& b) { parse_wld(b, "bad.wld"); };
-template <auto Parser>
-auto parse_fragment(uint32_t number)
-{
-    return [number](const Bytes& b) { Parser(parse_wld(b, "bad.wld"), number); };
-}
 
 TEST(WldBadInput, TruncatedHeaderAndBadMagic)
 {
@@ -789,43 +704,18 @@ void parse_everything(const Bytes& bytes)
     }
 }
 
-// true: parsed; false: FileError naming the file. Any other exception fails the test.
-bool parses(const Bytes& bytes)
-{
-    try {
-        parse_everything(bytes);
-        return true;
-    } catch (const FileError& e) {
-        EXPECT_EQ(e.file(), "sweep.wld");
-        EXPECT_LE(e.offset(), bytes.size());
-        return false;
-    }
-}
-
 TEST(WldSweep, EveryTruncationParsesOrThrowsFileError)
 {
     const Bytes& good = hand_made().file;
-    ASSERT_TRUE(parses(good));
-    size_t parsed = 0;
-    for (size_t length = 0; length < good.size(); ++length)
-        parsed += parses(Bytes(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length)));
-    EXPECT_EQ(parsed, 4u); // only cuts inside the optional trailer keep every fragment
+    ASSERT_TRUE(parses(good, parse_everything));
+    // Only cuts inside the optional trailer keep every fragment.
+    EXPECT_EQ(prefixes_that_parse(good, parse_everything), 4u);
 }
 
 TEST(WldSweep, RandomByteChangesParseOrThrowFileError)
 {
-    const Bytes& good = hand_made().file;
-    std::mt19937 rng(2024);
-    std::uniform_int_distribution<size_t> where(0, good.size() - 1);
-    std::uniform_int_distribution<int> value(0, 255), changes(1, 4);
-    size_t errors = 0;
-    for (int i = 0; i < 300; ++i) {
-        Bytes bytes = good;
-        for (int k = changes(rng); k > 0; --k)
-            bytes[where(rng)] = static_cast<uint8_t>(value(rng));
-        errors += !parses(bytes);
-    }
-    EXPECT_GT(errors, 30u); // many changes hit a count, a reference or a size
+    // Many changes hit a count, a reference or a size.
+    EXPECT_GT(random_changes_that_fail(hand_made().file, 2024, parse_everything), 30u);
 }
 
 } // namespace

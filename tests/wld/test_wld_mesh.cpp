@@ -6,6 +6,7 @@
 // every fragment written back byte for byte; writer-built files parsed back; bad input that must
 // throw FileError naming the fragment and the problem; a truncation / random-change sweep (run
 // under ASan + UBSan by tests/run-all.sh).
+#include "tests/wld/wld_test_bytes.h"
 #include "visibility/file_error.h"
 #include "wld/eq/wld_file.h"
 #include "wld/eq/wld_material.h"
@@ -17,61 +18,17 @@
 #include <cstdio>
 
 #include <cmath>
-#include <cstring>
 #include <map>
 #include <random>
 
 namespace pvs::eq {
 namespace {
 
-using Bytes = std::vector<uint8_t>;
+using namespace wld_test;
 
 constexpr uint32_t kOld = 0x00015500; // i16 / 256 uvs
 constexpr uint32_t kNew = 0x1000C800; // f32 uvs
 constexpr uint32_t kVersions[2] = {kOld, kNew};
-
-// Little-endian byte assembly, independent of the code under test.
-struct Builder {
-    Bytes out;
-    size_t size() const { return out.size(); }
-    Builder& u8(uint8_t v)
-    {
-        out.push_back(v);
-        return *this;
-    }
-    Builder& i8(int8_t v) { return u8(uint8_t(v)); }
-    Builder& u16(uint16_t v) { return u8(uint8_t(v)).u8(uint8_t(v >> 8)); }
-    Builder& i16(int16_t v) { return u16(uint16_t(v)); }
-    Builder& u32(uint32_t v) { return u16(uint16_t(v)).u16(uint16_t(v >> 16)); }
-    Builder& i32(int32_t v) { return u32(uint32_t(v)); }
-    Builder& f32(float v)
-    {
-        uint32_t bits;
-        std::memcpy(&bits, &v, 4);
-        return u32(bits);
-    }
-    Builder& raw(const Bytes& bytes)
-    {
-        out.insert(out.end(), bytes.begin(), bytes.end());
-        return *this;
-    }
-};
-
-// §2.2 with the key written out here again, so the tests do not trust wld_xor.
-Bytes spec_xor(const std::string& decoded)
-{
-    static const uint8_t key[8] = {0x95, 0x3A, 0xC5, 0x2A, 0x95, 0x7A, 0x95, 0x6A};
-    Bytes out(decoded.begin(), decoded.end());
-    for (size_t i = 0; i < out.size(); ++i)
-        out[i] ^= key[i % 8];
-    return out;
-}
-
-Bytes padded(Bytes bytes)
-{
-    bytes.resize((bytes.size() + 3) / 4 * 4, 0);
-    return bytes;
-}
 
 // §8.3: "sgrass.bmp" + NUL.
 const Bytes kSgrass = {0xE6, 0x5D, 0xB7, 0x4B, 0xE6, 0x09, 0xBB, 0x08, 0xF8, 0x4A, 0xC5};
@@ -121,12 +78,11 @@ HandMade build_hand_made(uint32_t version)
     const bool f32_uv = version == kNew;
     HandMade h;
     h.version = version;
-    h.strings.assign(1, '\0');
-    for (const char* s : kNames) {
-        h.refs[s] = -int32_t(h.strings.size());
-        h.strings += s;
-        h.strings.push_back('\0');
-    }
+    SpecStrings strings;
+    for (const char* s : kNames)
+        strings.add(s);
+    h.strings = strings.decoded;
+    h.refs = strings.refs;
     const auto add = [&](uint32_t type, const Builder& b) {
         h.types.push_back(type);
         h.bodies.push_back(b.out);
@@ -264,23 +220,9 @@ HandMade build_hand_made(uint32_t version)
         add(kWldMesh, b);
     }
 
-    // §2.1 header, §2.2 hash, §2.3 fragments, trailer
-    const Bytes hash = padded(spec_xor(h.strings));
-    size_t max_size = 0;
-    for (const Bytes& body : h.bodies)
-        max_size = std::max(max_size, padded(body).size());
-    const auto count = uint32_t(h.bodies.size());
-    Builder f;
-    f.u32(0x54503D02).u32(version).u32(count).u32(0).u32(uint32_t(max_size + 8)).u32(uint32_t(hash.size()));
-    f.u32(count);
-    f.raw(hash);
-    for (size_t i = 0; i < h.bodies.size(); ++i) {
-        f.u32(uint32_t(padded(h.bodies[i]).size())).u32(h.types[i]);
-        h.body_at.push_back(f.size());
-        f.raw(padded(h.bodies[i]));
-    }
-    f.u32(0xFFFFFFFF);
-    h.file = f.out;
+    SpecFile f = spec_wld(version, h.strings, h.types, h.bodies);
+    h.file = std::move(f.file);
+    h.body_at = std::move(f.body_at);
     return h;
 }
 
@@ -775,30 +717,6 @@ TEST(WldMesh, WritersRefuseWhatTheFileCannotHold)
 // ---------------------------------------------------------------------------------------------
 // Bad input: FileError naming the file, the absolute offset, the fragment and the problem
 
-template <class Parse>
-void expect_error(const Bytes& bytes, Parse&& parse, uint64_t offset, std::initializer_list<const char*> phrases)
-{
-    try {
-        parse(bytes);
-        ADD_FAILURE() << "no FileError; expected one with: " << *phrases.begin();
-    } catch (const FileError& e) {
-        EXPECT_EQ(e.file(), "bad.wld");
-        EXPECT_EQ(e.offset(), offset) << e.what();
-        for (const char* phrase : phrases)
-            EXPECT_NE(e.reason().find(phrase), std::string::npos) << "'" << phrase << "' not in: " << e.reason();
-    }
-}
-
-void put_u32(Bytes& bytes, uint64_t at, uint32_t value) { std::memcpy(bytes.data() + at, &value, 4); }
-void put_u16(Bytes& bytes, uint64_t at, uint16_t value) { std::memcpy(bytes.data() + at, &value, 2); }
-void put_f32(Bytes& bytes, uint64_t at, float value) { std::memcpy(bytes.data() + at, &value, 4); }
-
-template <auto Parser>
-auto parse_fragment(uint32_t number)
-{
-    return [number](const Bytes& b) { (void)Parser(parse_wld(b, "bad.wld"), number); };
-}
-
 TEST(WldMeshBadInput, CountsThatDoNotFit)
 {
     const HandMade& h = hand_made(kOld);
@@ -1009,28 +927,14 @@ void parse_everything(const Bytes& bytes)
     }
 }
 
-bool parses(const Bytes& bytes)
-{
-    try {
-        parse_everything(bytes);
-        return true;
-    } catch (const FileError& e) {
-        EXPECT_EQ(e.file(), "sweep.wld");
-        EXPECT_LE(e.offset(), bytes.size());
-        return false;
-    }
-}
-
 TEST(WldMeshSweep, EveryTruncationParsesOrThrowsFileError)
 {
     for (const uint32_t version : kVersions) {
         SCOPED_TRACE(version);
         const Bytes& good = hand_made(version).file;
-        ASSERT_TRUE(parses(good));
-        size_t parsed = 0;
-        for (size_t length = 0; length < good.size(); ++length)
-            parsed += parses(Bytes(good.begin(), good.begin() + static_cast<std::ptrdiff_t>(length)));
-        EXPECT_EQ(parsed, 4u); // only cuts inside the optional trailer keep every fragment
+        ASSERT_TRUE(parses(good, parse_everything));
+        // Only cuts inside the optional trailer keep every fragment.
+        EXPECT_EQ(prefixes_that_parse(good, parse_everything), 4u);
     }
 }
 
@@ -1038,18 +942,8 @@ TEST(WldMeshSweep, RandomByteChangesParseOrThrowFileError)
 {
     for (const uint32_t version : kVersions) {
         SCOPED_TRACE(version);
-        const Bytes& good = hand_made(version).file;
-        std::mt19937 rng(version);
-        std::uniform_int_distribution<size_t> where(0, good.size() - 1);
-        std::uniform_int_distribution<int> value(0, 255), changes(1, 4);
-        size_t errors = 0;
-        for (int i = 0; i < 300; ++i) {
-            Bytes bytes = good;
-            for (int k = changes(rng); k > 0; --k)
-                bytes[where(rng)] = static_cast<uint8_t>(value(rng));
-            errors += !parses(bytes);
-        }
-        EXPECT_GT(errors, 30u); // many changes hit a count, a reference, a size or a face index
+        // Many changes hit a count, a reference, a size or a face index.
+        EXPECT_GT(random_changes_that_fail(hand_made(version).file, version, parse_everything), 30u);
     }
 }
 

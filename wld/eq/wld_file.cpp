@@ -2,6 +2,7 @@
 
 #include "visibility/zone.h"
 #include "wld/common/byte_reader.h"
+#include "wld/eq/wld_body.h"
 #include "wld/eq/wld_string_hash.h"
 
 #include <algorithm>
@@ -15,188 +16,11 @@ namespace pvs::eq {
 
 namespace {
 
-std::string hex(uint32_t value)
-{
-    char text[16];
-    std::snprintf(text, sizeof text, "0x%02X", value);
-    return text;
-}
-
-// "fragment 12 (0x22 region)": how every error inside a fragment starts.
-std::string fragment_label(uint32_t number, uint32_t type)
-{
-    const char* type_name = wld_fragment_type_name(type);
-    return "fragment " + std::to_string(number) + " (" + hex(type) + (*type_name ? " " : "") + type_name + ")";
-}
-
-std::string indexed(const char* what, int64_t index)
-{
-    return index < 0 ? std::string(what) : std::string(what) + " " + std::to_string(index);
-}
-
-// Reads one fragment body front to back. Every read stays inside the body, and every failure
-// names the fragment, its type and the absolute offset in the WLD bytes.
-class BodyReader {
-public:
-    BodyReader(const WldFile& wld, uint32_t number, uint32_t expected_type)
-        : wld_(wld), number_(number), in_(wld.bytes, wld.name)
-    {
-        if (number == 0 || number > wld.fragments.size())
-            throw std::out_of_range("WLD fragment " + std::to_string(number) + " does not exist (the file has " +
-                                    std::to_string(wld.fragments.size()) + ")");
-        fragment_ = wld.fragments[number - 1];
-        if (fragment_.type != expected_type)
-            fail(fragment_.body_offset - kWldFragmentHeaderSize + 4,
-                 "expected a " + hex(expected_type) + " " + wld_fragment_type_name(expected_type) + " fragment");
-        // parse_wld checked this; a hand-made WldFile may not have been.
-        in_.require(fragment_.body_offset, fragment_.body_size, "fragment body");
-    }
-
-    const WldFile& wld() const { return wld_; }
-    uint32_t number() const { return number_; }
-    uint64_t at() const { return fragment_.body_offset + pos_; }
-    uint64_t left() const { return fragment_.body_size - pos_; }
-
-    [[noreturn]] void fail(uint64_t offset, const std::string& reason) const
-    {
-        in_.fail(offset, fragment_label(number_, fragment_.type) + ": " + reason);
-    }
-
-    void need(uint64_t length, const char* what, int64_t index = -1) const
-    {
-        if (length > left())
-            fail(at(), indexed(what, index) + " runs past the end of the fragment (" + std::to_string(length) +
-                           " bytes needed, " + std::to_string(left()) + " left)");
-    }
-
-    template <class T>
-    T read(const char* what, int64_t index = -1)
-    {
-        need(sizeof(T), what, index);
-        const T value = in_.read<T>(at(), what);
-        pos_ += sizeof(T);
-        return value;
-    }
-
-    std::span<const uint8_t> bytes(uint64_t length, const char* what, int64_t index = -1)
-    {
-        need(length, what, index);
-        const auto span = in_.bytes(at(), length, what);
-        pos_ += length;
-        return span;
-    }
-
-    glm::vec2 vec2(const char* what) { return {read<float>(what), read<float>(what)}; }
-    glm::vec3 vec3(const char* what) { return {read<float>(what), read<float>(what), read<float>(what)}; }
-    glm::vec4 vec4(const char* what)
-    {
-        return {read<float>(what), read<float>(what), read<float>(what), read<float>(what)};
-    }
-
-    // Reads a u32 count and checks that `count` elements of at least `min_bytes` each fit in
-    // what is left of the body, before anyone reserves memory for them.
-    uint32_t count(const char* what, uint64_t min_bytes, int64_t index = -1)
-    {
-        const uint64_t count_at = at();
-        const auto value = read<uint32_t>(what, index);
-        if (uint64_t{value} * min_bytes > left())
-            fail(count_at, indexed(what, index) + " " + std::to_string(value) + " does not fit in the fragment (" +
-                               std::to_string(left()) + " bytes left, at least " + std::to_string(min_bytes) +
-                               " per element)");
-        return value;
-    }
-
-    std::vector<uint32_t> u32_list(uint32_t count, const char* what, int64_t index = -1)
-    {
-        const auto raw = bytes(uint64_t{count} * 4, what, index);
-        std::vector<uint32_t> values(count);
-        if (count != 0) // memcpy from/to a null pointer is undefined even for 0 bytes
-            std::memcpy(values.data(), raw.data(), raw.size()); // little-endian host (byte_reader.h)
-        return values;
-    }
-
-    // A fragment reference field (§2.4): 0, an earlier fragment, or a name that exists.
-    int32_t fragment_ref(const char* what, int64_t index = -1)
-    {
-        const uint64_t ref_at = at();
-        const auto ref = read<int32_t>(what, index);
-        if (ref > 0 && uint32_t(ref) > wld_.fragments.size())
-            fail(ref_at, indexed(what, index) + " " + std::to_string(ref) + " is out of range (the file has " +
-                             std::to_string(wld_.fragments.size()) + " fragments)");
-        if (ref > 0 && uint32_t(ref) >= number_)
-            fail(ref_at, indexed(what, index) + " " + std::to_string(ref) +
-                             " is a forward reference (it must name an earlier fragment)");
-        if (ref < 0 && !wld_string_at(wld_.strings, ref))
-            fail(ref_at, indexed(what, index) + " " + std::to_string(ref) +
-                             " names a string outside the string hash (" + std::to_string(wld_.strings.size()) +
-                             " bytes)");
-        return ref;
-    }
-
-private:
-    const WldFile& wld_;
-    uint32_t number_;
-    ByteReader in_;
-    WldFragment fragment_;
-    uint64_t pos_ = 0;
-};
-
-// Builds a fragment body.
-class BodyWriter {
-public:
-    template <class T>
-    void put(T value)
-    {
-        static_assert(std::is_arithmetic_v<T>);
-        uint8_t raw[sizeof(T)];
-        std::memcpy(raw, &value, sizeof(T)); // little-endian host (byte_reader.h)
-        out_.insert(out_.end(), raw, raw + sizeof(T));
-    }
-    void put(glm::vec2 v)
-    {
-        put(v.x);
-        put(v.y);
-    }
-    void put(glm::vec3 v)
-    {
-        put(v.x);
-        put(v.y);
-        put(v.z);
-    }
-    void put(glm::vec4 v)
-    {
-        put(glm::vec3(v));
-        put(v.w);
-    }
-    void put_bytes(std::span<const uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }
-    void put_u32s(std::span<const uint32_t> values)
-    {
-        for (uint32_t v : values)
-            put(v);
-    }
-    template <class Container>
-    void put_count(const Container& items, const char* what)
-    {
-        if (items.size() > std::numeric_limits<uint32_t>::max())
-            throw std::invalid_argument(std::string(what) + ": more than 2^32 - 1 elements");
-        put(static_cast<uint32_t>(items.size()));
-    }
-    // Bodies are padded to a multiple of 4 with zeros (§2.3, §7.4).
-    std::vector<uint8_t> finish()
-    {
-        out_.resize((out_.size() + 3) / 4 * 4, 0);
-        return std::move(out_);
-    }
-
-private:
-    std::vector<uint8_t> out_;
-};
-
 bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // ---- 0x22 parts ----
 
-WldRenderInfo read_render_info(BodyReader& r, int64_t wall)
+WldRenderInfo read_render_info(WldBodyReader& r, int64_t wall)
 {
     WldRenderInfo info;
     info.flags = r.read<uint32_t>("wall render info flags", wall);
@@ -207,7 +31,7 @@ WldRenderInfo read_render_info(BodyReader& r, int64_t wall)
     if (info.flags & kWldRenderScaledAmbient)
         info.scaled_ambient = r.read<float>("wall scaled ambient", wall);
     if (info.flags & kWldRenderSprite)
-        info.sprite_ref = r.fragment_ref("wall sprite reference", wall);
+        info.sprite_ref = r.fragment_ref("wall sprite reference", kWldAnyFragmentType, wall);
     if (info.flags & kWldRenderUvInfo) {
         info.uv_origin = r.vec3("wall uv origin");
         info.u_axis = r.vec3("wall u axis");
@@ -225,12 +49,12 @@ WldRenderInfo read_render_info(BodyReader& r, int64_t wall)
 // Wall layout (LQ, LX): flags, vertex list, then the render data when flags bit 1 is set.
 // Vertex indices are not checked against the region's own vertices: LQ's tanarus fixture has
 // indices in the thousands, so they index something larger.
-WldWall read_wall(BodyReader& r, int64_t index)
+WldWall read_wall(WldBodyReader& r, int64_t index)
 {
     WldWall wall;
     wall.flags = r.read<uint32_t>("wall flags", index);
     const uint32_t n = r.count("wall vertex count", 4, index);
-    wall.vertices = r.u32_list(n, "wall vertex list", index);
+    wall.vertices = r.u32s(n, "wall vertex list", index);
     if (wall.flags & kWldWallRenderData) {
         wall.render_method = r.read<uint32_t>("wall render method", index);
         wall.render_info = read_render_info(r, index);
@@ -244,7 +68,7 @@ bool known_obstacle_type(int32_t type)
     return (type >= 8 && type <= 14) || type == kWldObstacleEdgePolygonNormal || type == kWldObstacleEdgeWall;
 }
 
-WldObstacle read_obstacle(BodyReader& r, int64_t index, size_t wall_count)
+WldObstacle read_obstacle(WldBodyReader& r, int64_t index, size_t wall_count)
 {
     WldObstacle ob;
     ob.flags = r.read<uint32_t>("obstacle flags", index);
@@ -256,7 +80,7 @@ WldObstacle read_obstacle(BodyReader& r, int64_t index, size_t wall_count)
                             " (the size of its data is not known)");
     if (ob.type == kWldObstacleEdgePolygon || ob.type == kWldObstacleEdgePolygonNormal) {
         const uint32_t n = r.count("obstacle vertex count", 4, index);
-        ob.vertices = r.u32_list(n, "obstacle vertex list", index);
+        ob.vertices = r.u32s(n, "obstacle vertex list", index);
     }
     if (ob.type == kWldObstacleEdgePolygonNormal)
         ob.normal = r.vec4("obstacle normal");
@@ -275,7 +99,7 @@ WldObstacle read_obstacle(BodyReader& r, int64_t index, size_t wall_count)
     return ob;
 }
 
-WldVisNode read_vis_node(BodyReader& r, int64_t index, uint32_t node_count, uint32_t list_count)
+WldVisNode read_vis_node(WldBodyReader& r, int64_t index, uint32_t node_count, uint32_t list_count)
 {
     WldVisNode node;
     node.normal = r.vec4("vis node normal");
@@ -294,7 +118,7 @@ WldVisNode read_vis_node(BodyReader& r, int64_t index, uint32_t node_count, uint
     return node;
 }
 
-WldVisList read_vis_list(BodyReader& r, int64_t index, bool byte_form)
+WldVisList read_vis_list(WldBodyReader& r, int64_t index, bool byte_form)
 {
     WldVisList list;
     list.byte_form = byte_form;
@@ -306,14 +130,14 @@ WldVisList read_vis_list(BodyReader& r, int64_t index, bool byte_form)
 }
 
 // The mesh reference must name a mesh: 0x36, or the legacy 0x2C LX reads for flag bit 6.
-void check_mesh_target(const BodyReader& r, int32_t mesh_ref, uint64_t ref_at)
+void check_mesh_target(const WldBodyReader& r, int32_t mesh_ref, uint64_t ref_at)
 {
     if (mesh_ref <= 0)
         return;
     const uint32_t type = r.wld().fragments[uint32_t(mesh_ref) - 1].type;
     if (type != kWldMesh && type != kWldLegacyMesh)
-        r.fail(ref_at, "mesh_ref " + std::to_string(mesh_ref) + " names " + fragment_label(uint32_t(mesh_ref), type) +
-                           ", not a mesh (0x36)");
+        r.fail(ref_at, "mesh_ref " + std::to_string(mesh_ref) + " names " +
+                           wld_fragment_label(uint32_t(mesh_ref), type) + ", not a mesh (0x36)");
 }
 
 // ---- 0x29 type strings (§5.2) ----
@@ -442,7 +266,7 @@ WldHeader read_header(const ByteReader& in)
     WldHeader h;
     h.version = in.read<uint32_t>(4, "version");
     if (h.version != kWldVersionOld && h.version != kWldVersionNew)
-        in.fail(4, "unknown WLD version " + hex(h.version) + " (known: 0x00015500 old, 0x1000C800 new)");
+        in.fail(4, "unknown WLD version " + wld_hex(h.version) + " (known: 0x00015500 old, 0x1000C800 new)");
     h.fragment_count = in.read<uint32_t>(8, "fragment_count");
     h.region_count = in.read<uint32_t>(12, "region_count");
     h.max_object_bytes = in.read<uint32_t>(16, "max_object_bytes");
@@ -466,7 +290,7 @@ void read_fragment_table(const ByteReader& in, WldFile& wld, uint64_t at)
         WldFragment f;
         const auto body_size = in.read<uint32_t>(at, "fragment size");
         f.type = in.read<uint32_t>(at + 4, "fragment type");
-        const auto label = [&] { return fragment_label(n, f.type); }; // built only for an error
+        const auto label = [&] { return wld_fragment_label(n, f.type); }; // built only for an error
         if (body_size < 4)
             in.fail(at, label() + ": size " + std::to_string(body_size) + " is smaller than its 4-byte name_ref");
         if (body_size > size - at - kWldFragmentHeaderSize)
@@ -532,7 +356,7 @@ uint32_t resolve_fragment_ref(const WldFile& wld, int32_t ref)
 
 WldBspTree parse_bsp_tree(const WldFile& wld, uint32_t number)
 {
-    BodyReader r(wld, number, kWldBspTree);
+    WldBodyReader r(wld, number, kWldBspTree);
     WldBspTree tree;
     tree.name_ref = r.read<int32_t>("name_ref");
     const uint32_t count = r.count("node_count", 28);
@@ -583,7 +407,7 @@ WldBspTree parse_bsp_tree(const WldFile& wld, uint32_t number)
 
 std::vector<uint8_t> write_bsp_tree(const WldBspTree& tree)
 {
-    BodyWriter w;
+    WldByteWriter w;
     w.put(tree.name_ref);
     w.put_count(tree.nodes, "0x21 nodes");
     for (const WldBspNode& node : tree.nodes) {
@@ -602,11 +426,11 @@ std::vector<uint8_t> write_bsp_tree(const WldBspTree& tree)
 
 WldRegion parse_region(const WldFile& wld, uint32_t number)
 {
-    BodyReader r(wld, number, kWldRegion);
+    WldBodyReader r(wld, number, kWldRegion);
     WldRegion region;
     region.name_ref = r.read<int32_t>("name_ref");
     region.flags = r.read<uint32_t>("flags");
-    region.ambient_light = r.fragment_ref("ambient_light");
+    region.ambient_light = r.fragment_ref("ambient_light", kWldAnyFragmentType);
     // NV NP NR NW NO NC NN NL come first; each is checked against the bytes left when its part
     // is read.
     uint32_t counts[8];
@@ -614,16 +438,10 @@ WldRegion parse_region(const WldFile& wld, uint32_t number)
     for (uint32_t& c : counts)
         c = r.read<uint32_t>("region counts");
     const auto check = [&](int k, uint64_t min_bytes, const char* what) {
-        if (uint64_t{counts[k]} * min_bytes > r.left())
-            r.fail(counts_at + 4 * uint64_t(k), std::string(what) + " " + std::to_string(counts[k]) +
-                                                    " does not fit in the fragment (" + std::to_string(r.left()) +
-                                                    " bytes left, at least " + std::to_string(min_bytes) + " each)");
+        r.check_count(counts[k], counts_at + 4 * uint64_t(k), min_bytes, what);
         return counts[k];
     };
-    const uint32_t nv = check(0, 12, "num_region_vertices");
-    region.vertices.reserve(nv);
-    for (uint32_t i = 0; i < nv; ++i)
-        region.vertices.push_back(r.vec3("region vertex"));
+    region.vertices = r.vec3s(check(0, 12, "num_region_vertices"), "region vertex");
     const uint32_t np = check(1, 8, "num_proximal_regions");
     region.proximal_regions.reserve(np);
     for (uint32_t i = 0; i < np; ++i) {
@@ -633,10 +451,7 @@ WldRegion parse_region(const WldFile& wld, uint32_t number)
     }
     // Render vertices are read whatever NW is (LX/QL; LQ reads them only when NW == 0, by its
     // own admission a guess).
-    const uint32_t nr = check(2, 12, "num_render_vertices");
-    region.render_vertices.reserve(nr);
-    for (uint32_t i = 0; i < nr; ++i)
-        region.render_vertices.push_back(r.vec3("render vertex"));
+    region.render_vertices = r.vec3s(check(2, 12, "num_render_vertices"), "render vertex");
     const uint32_t nw = check(3, 8, "num_walls");
     region.walls.reserve(nw);
     for (uint32_t i = 0; i < nw; ++i)
@@ -666,7 +481,7 @@ WldRegion parse_region(const WldFile& wld, uint32_t number)
     region.user_data.assign(user.begin(), user.end());
     if ((region.flags & kWldRegionMeshRef) || ((region.flags & kWldRegionLegacyMeshRef) && r.left() >= 4)) {
         const uint64_t ref_at = r.at();
-        region.mesh_ref = r.fragment_ref("mesh_ref");
+        region.mesh_ref = r.fragment_ref("mesh_ref", kWldAnyFragmentType);
         check_mesh_target(r, region.mesh_ref, ref_at);
     }
     return region;
@@ -674,7 +489,7 @@ WldRegion parse_region(const WldFile& wld, uint32_t number)
 
 namespace {
 
-void write_render_info(BodyWriter& w, const WldRenderInfo& info)
+void write_render_info(WldByteWriter& w, const WldRenderInfo& info)
 {
     w.put(info.flags);
     if (info.flags & kWldRenderPen)
@@ -692,12 +507,11 @@ void write_render_info(BodyWriter& w, const WldRenderInfo& info)
     }
     if (info.flags & kWldRenderUvMap) {
         w.put_count(info.uv_map, "0x22 wall uv map");
-        for (const glm::vec2 uv : info.uv_map)
-            w.put(uv);
+        w.put_each(info.uv_map);
     }
 }
 
-void write_obstacle(BodyWriter& w, const WldObstacle& ob, size_t wall_count)
+void write_obstacle(WldByteWriter& w, const WldObstacle& ob, size_t wall_count)
 {
     if (!known_obstacle_type(ob.type))
         throw std::invalid_argument("0x22 obstacle type " + std::to_string(ob.type) + " has no known layout");
@@ -709,7 +523,7 @@ void write_obstacle(BodyWriter& w, const WldObstacle& ob, size_t wall_count)
     w.put(ob.type);
     if (ob.type == kWldObstacleEdgePolygon || ob.type == kWldObstacleEdgePolygonNormal) {
         w.put_count(ob.vertices, "0x22 obstacle vertices");
-        w.put_u32s(ob.vertices);
+        w.put_each(ob.vertices);
     }
     if (ob.type == kWldObstacleEdgePolygonNormal)
         w.put(ob.normal);
@@ -721,7 +535,7 @@ void write_obstacle(BodyWriter& w, const WldObstacle& ob, size_t wall_count)
     }
 }
 
-void write_vis_list(BodyWriter& w, const WldVisList& list, bool byte_form)
+void write_vis_list(WldByteWriter& w, const WldVisList& list, bool byte_form)
 {
     if (list.byte_form != byte_form)
         throw std::invalid_argument("0x22 vis list form differs from the region's flag bit 7");
@@ -743,7 +557,7 @@ std::vector<uint8_t> write_region(const WldRegion& region)
         if (node.vis_list_index > region.vis_lists.size() || node.front > region.vis_nodes.size() ||
             node.back > region.vis_nodes.size())
             throw std::invalid_argument("0x22 vis node names a list or node the region does not have");
-    BodyWriter w;
+    WldByteWriter w;
     w.put(region.name_ref);
     w.put(region.flags);
     w.put(region.ambient_light);
@@ -755,18 +569,16 @@ std::vector<uint8_t> write_region(const WldRegion& region)
     w.put(region.cutting_obstacle_count);
     w.put_count(region.vis_nodes, "0x22 vis nodes");
     w.put_count(region.vis_lists, "0x22 vis lists");
-    for (const glm::vec3 v : region.vertices)
-        w.put(v);
+    w.put_each(region.vertices);
     for (const WldProximalRegion& p : region.proximal_regions) {
         w.put(p.region);
         w.put(p.distance);
     }
-    for (const glm::vec3 v : region.render_vertices)
-        w.put(v);
+    w.put_each(region.render_vertices);
     for (const WldWall& wall : region.walls) {
         w.put(wall.flags);
         w.put_count(wall.vertices, "0x22 wall vertices");
-        w.put_u32s(wall.vertices);
+        w.put_each(wall.vertices);
         if (wall.flags & kWldWallRenderData) {
             w.put(wall.render_method);
             write_render_info(w, wall.render_info);
@@ -846,7 +658,7 @@ WldRegionType classify_region_type(std::string_view text)
 
 WldRegionFlag parse_region_flag(const WldFile& wld, uint32_t number)
 {
-    BodyReader r(wld, number, kWldRegionFlag);
+    WldBodyReader r(wld, number, kWldRegionFlag);
     WldRegionFlag flag;
     flag.name_ref = r.read<int32_t>("name_ref");
     flag.flags = r.read<uint32_t>("flags");
@@ -875,11 +687,11 @@ WldRegionFlag parse_region_flag(const WldFile& wld, uint32_t number)
 
 std::vector<uint8_t> write_region_flag(const WldRegionFlag& flag)
 {
-    BodyWriter w;
+    WldByteWriter w;
     w.put(flag.name_ref);
     w.put(flag.flags);
     w.put_count(flag.regions, "0x29 regions");
-    w.put_u32s(flag.regions);
+    w.put_each(flag.regions);
     if (flag.user_data.empty()) {
         w.put(uint32_t{0});
     } else {
@@ -901,7 +713,7 @@ void check_order(std::span<const WldFragmentBytes> fragments)
     bool tree = false, flag = false;
     for (size_t i = 0; i < fragments.size(); ++i) {
         const uint32_t type = fragments[i].type;
-        const auto where = [&] { return "WLD fragment " + std::to_string(i + 1) + " (" + hex(type) + ")"; };
+        const auto where = [&] { return "WLD fragment " + std::to_string(i + 1) + " (" + wld_hex(type) + ")"; };
         if (type == kWldBspTree && tree)
             throw std::invalid_argument(where() + ": a second 0x21 bsp tree (readers keep only one)");
         if ((type == kWldRegion || type == kWldRegionFlag) && !tree)
@@ -913,19 +725,13 @@ void check_order(std::span<const WldFragmentBytes> fragments)
     }
 }
 
-void put_u32(std::vector<uint8_t>& out, uint32_t value)
-{
-    for (int i = 0; i < 4; ++i)
-        out.push_back(static_cast<uint8_t>(value >> (8 * i)));
-}
-
 } // namespace
 
 std::vector<uint8_t> write_wld(uint32_t version, std::span<const char> strings,
                                std::span<const WldFragmentBytes> fragments)
 {
     if (version != kWldVersionOld && version != kWldVersionNew)
-        throw std::invalid_argument("unknown WLD version " + hex(version));
+        throw std::invalid_argument("unknown WLD version " + wld_hex(version));
     static const char kEmpty[1] = {'\0'};
     if (strings.empty())
         strings = kEmpty;
@@ -942,7 +748,7 @@ std::vector<uint8_t> write_wld(uint32_t version, std::span<const char> strings,
     uint32_t regions = 0;
     for (size_t i = 0; i < fragments.size(); ++i) {
         const WldFragmentBytes& f = fragments[i];
-        const auto where = [&] { return "WLD fragment " + std::to_string(i + 1) + " (" + hex(f.type) + ")"; };
+        const auto where = [&] { return "WLD fragment " + std::to_string(i + 1) + " (" + wld_hex(f.type) + ")"; };
         if (f.body.size() < 4)
             throw std::invalid_argument(where() + ": a body holds at least its name_ref");
         const uint64_t padded = (uint64_t{f.body.size()} + 3) / 4 * 4;
@@ -959,25 +765,24 @@ std::vector<uint8_t> write_wld(uint32_t version, std::span<const char> strings,
     }
 
     const auto string_count = static_cast<uint32_t>(std::count(strings.begin(), strings.end(), '\0') - 1);
-    std::vector<uint8_t> out;
+    WldByteWriter out;
     out.reserve(total);
-    put_u32(out, kWldMagic);
-    put_u32(out, version);
-    put_u32(out, static_cast<uint32_t>(fragments.size()));
-    put_u32(out, regions);
-    put_u32(out, static_cast<uint32_t>(std::min<uint64_t>(max_size + 8, std::numeric_limits<uint32_t>::max())));
-    put_u32(out, static_cast<uint32_t>(hash.size()));
-    put_u32(out, string_count);
-    out.insert(out.end(), hash.begin(), hash.end());
+    out.put(kWldMagic);
+    out.put(version);
+    out.put(static_cast<uint32_t>(fragments.size()));
+    out.put(regions);
+    out.put(static_cast<uint32_t>(std::min<uint64_t>(max_size + 8, std::numeric_limits<uint32_t>::max())));
+    out.put(static_cast<uint32_t>(hash.size()));
+    out.put(string_count);
+    out.put_bytes(hash); // padded to 4 by encode_string_hash
     for (const WldFragmentBytes& f : fragments) {
-        const uint64_t padded = (uint64_t{f.body.size()} + 3) / 4 * 4;
-        put_u32(out, static_cast<uint32_t>(padded));
-        put_u32(out, f.type);
-        out.insert(out.end(), f.body.begin(), f.body.end());
-        out.resize(out.size() + (padded - f.body.size()), 0);
+        out.put(static_cast<uint32_t>((uint64_t{f.body.size()} + 3) / 4 * 4));
+        out.put(f.type);
+        out.put_bytes(f.body);
+        out.pad4();
     }
-    put_u32(out, 0xFFFFFFFFu);
-    return out;
+    out.put(0xFFFFFFFFu);
+    return out.finish(); // every part is a multiple of 4: adds nothing
 }
 
 } // namespace pvs::eq

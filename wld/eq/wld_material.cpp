@@ -1,137 +1,13 @@
 #include "wld/eq/wld_material.h"
 
-#include "visibility/file_error.h"
+#include "wld/eq/wld_body.h"
 #include "wld/eq/wld_string_hash.h"
 
-#include <cstdio>
-#include <limits>
 #include <stdexcept>
 
 namespace pvs::eq {
 
-// ---- Internal reader and writer ----
-
-namespace detail {
-
 namespace {
-
-std::string hex(uint32_t value)
-{
-    char text[16];
-    std::snprintf(text, sizeof text, "0x%02X", value);
-    return text;
-}
-
-std::string indexed(const char* what, int64_t index)
-{
-    return index < 0 ? std::string(what) : std::string(what) + " " + std::to_string(index);
-}
-
-std::string type_label(uint32_t type)
-{
-    const char* name = wld_fragment_type_name(type);
-    return hex(type) + (*name ? " " : "") + name;
-}
-
-} // namespace
-
-std::string wld_fragment_label(uint32_t number, uint32_t type)
-{
-    return "fragment " + std::to_string(number) + " (" + type_label(type) + ")";
-}
-
-WldBodyReader::WldBodyReader(const WldFile& wld, uint32_t number, uint32_t expected_type)
-    : wld_(wld), number_(number), type_(expected_type)
-{
-    if (number == 0 || number > wld.fragments.size())
-        throw std::out_of_range("WLD fragment " + std::to_string(number) + " does not exist (the file has " +
-                                std::to_string(wld.fragments.size()) + ")");
-    const WldFragment& f = wld.fragments[number - 1];
-    type_ = f.type;
-    body_offset_ = f.body_offset;
-    body_size_ = f.body_size;
-    if (f.type != expected_type)
-        fail(f.body_offset - kWldFragmentHeaderSize + 4, "expected a " + type_label(expected_type) + " fragment");
-    // parse_wld checked this; a hand-made WldFile may not have been.
-    if (f.body_offset > wld.bytes.size() || f.body_size > wld.bytes.size() - f.body_offset)
-        fail(f.body_offset, "fragment body runs past the end of the data (" + std::to_string(f.body_size) +
-                                " bytes needed)");
-}
-
-void WldBodyReader::fail(uint64_t offset, const std::string& reason) const
-{
-    throw FileError(wld_.name, offset, wld_fragment_label(number_, type_) + ": " + reason);
-}
-
-std::span<const uint8_t> WldBodyReader::bytes(uint64_t length, const char* what, int64_t index)
-{
-    if (length > left())
-        fail(at(), indexed(what, index) + " runs past the end of the fragment (" + std::to_string(length) +
-                       " bytes needed, " + std::to_string(left()) + " left)");
-    const auto span = wld_.bytes.subspan(at(), length);
-    pos_ += length;
-    return span;
-}
-
-glm::vec3 WldBodyReader::vec3(const char* what, int64_t index)
-{
-    const auto x = read<float>(what, index);
-    const auto y = read<float>(what, index);
-    const auto z = read<float>(what, index);
-    return {x, y, z};
-}
-
-void WldBodyReader::check_count(uint64_t count, uint64_t count_at, uint64_t min_bytes, const char* what,
-                                int64_t index) const
-{
-    // count < 2^33 and min_bytes < 2^8 here: the product cannot overflow.
-    if (count * min_bytes > left())
-        fail(count_at, indexed(what, index) + " " + std::to_string(count) + " does not fit in the fragment (" +
-                           std::to_string(left()) + " bytes left, at least " + std::to_string(min_bytes) +
-                           " per element)");
-}
-
-int32_t WldBodyReader::fragment_ref(const char* what, uint32_t target_type, int64_t index)
-{
-    const uint64_t ref_at = at();
-    const auto ref = read<int32_t>(what, index);
-    const std::string name = indexed(what, index) + " " + std::to_string(ref);
-    if (ref > 0 && uint32_t(ref) > wld_.fragments.size())
-        fail(ref_at, name + " is out of range (the file has " + std::to_string(wld_.fragments.size()) +
-                         " fragments)");
-    if (ref > 0 && uint32_t(ref) >= number_)
-        fail(ref_at, name + " is a forward reference (it must name an earlier fragment)");
-    if (ref > 0 && target_type != 0 && wld_.fragments[uint32_t(ref) - 1].type != target_type) {
-        const uint32_t type = wld_.fragments[uint32_t(ref) - 1].type;
-        fail(ref_at, name + " names " + wld_fragment_label(uint32_t(ref), type) + ", not a " +
-                         type_label(target_type));
-    }
-    if (ref < 0 && !wld_string_at(wld_.strings, ref))
-        fail(ref_at, name + " names a string outside the string hash (" + std::to_string(wld_.strings.size()) +
-                         " bytes)");
-    return ref;
-}
-
-std::vector<uint8_t> WldBodyWriter::finish()
-{
-    out_.resize((out_.size() + 3) / 4 * 4, 0);
-    return std::move(out_);
-}
-
-} // namespace detail
-
-using detail::WldBodyReader;
-using detail::WldBodyWriter;
-
-namespace {
-
-template <class Container>
-uint32_t count32(const Container& items, const char* what)
-{
-    if (items.size() > std::numeric_limits<uint32_t>::max())
-        throw std::invalid_argument(std::string(what) + ": more than 2^32 - 1 elements");
-    return static_cast<uint32_t>(items.size());
-}
 
 // LQ/QL read the "sleep" field when both bits are set (ZU/WQ on bit 0x08 alone).
 bool has_sleep(uint32_t flags)
@@ -170,9 +46,9 @@ std::vector<uint8_t> write_bitmap_name(const WldBitmapName& bitmap)
 {
     if (bitmap.files.empty())
         throw std::invalid_argument("0x03 bitmap name: at least one file name is needed (count = names - 1)");
-    WldBodyWriter w;
+    WldByteWriter w;
     w.put(bitmap.name_ref);
-    w.put(count32(bitmap.files, "0x03 names") - 1);
+    w.put(wld_count32(bitmap.files, "0x03 names") - 1);
     for (const std::string& file : bitmap.files) {
         const std::vector<uint8_t> encoded = encode_wld_string(file); // throws for a NUL inside
         if (encoded.size() > 0xFFFF)
@@ -199,24 +75,21 @@ WldSpriteDef parse_sprite_def(const WldFile& wld, uint32_t number)
     if (has_sleep(def.flags))
         def.sleep = r.read<uint32_t>("sleep");
     r.check_count(frame_count, count_at, 4, "frame_count");
-    def.frames.reserve(frame_count);
-    for (uint32_t i = 0; i < frame_count; ++i)
-        def.frames.push_back(r.fragment_ref("frame reference", kWldBitmapName, i));
+    def.frames = r.fragment_refs(frame_count, "frame reference", kWldBitmapName);
     return def;
 }
 
 std::vector<uint8_t> write_sprite_def(const WldSpriteDef& def)
 {
-    WldBodyWriter w;
+    WldByteWriter w;
     w.put(def.name_ref);
     w.put(def.flags);
-    w.put(count32(def.frames, "0x04 frames"));
+    w.put_count(def.frames, "0x04 frames");
     if (def.flags & kWldSpriteDefCurrentFrame)
         w.put(def.current_frame);
     if (has_sleep(def.flags))
         w.put(def.sleep);
-    for (const int32_t frame : def.frames)
-        w.put(frame);
+    w.put_each(def.frames);
     return w.finish();
 }
 
@@ -234,7 +107,7 @@ WldSprite parse_sprite(const WldFile& wld, uint32_t number)
 
 std::vector<uint8_t> write_sprite(const WldSprite& sprite)
 {
-    WldBodyWriter w;
+    WldByteWriter w;
     w.put(sprite.name_ref);
     w.put(sprite.sprite_def_ref);
     w.put(sprite.flags);
@@ -264,7 +137,7 @@ WldMaterial parse_material(const WldFile& wld, uint32_t number)
 
 std::vector<uint8_t> write_material(const WldMaterial& m)
 {
-    WldBodyWriter w;
+    WldByteWriter w;
     w.put(m.name_ref);
     w.put(m.flags);
     w.put(m.render_method);
@@ -346,23 +219,18 @@ WldMaterialPalette parse_material_palette(const WldFile& wld, uint32_t number)
     WldMaterialPalette palette;
     palette.name_ref = r.read<int32_t>("name_ref");
     palette.flags = r.read<uint32_t>("flags");
-    const uint64_t count_at = r.at();
-    const auto count = r.read<uint32_t>("material count");
-    r.check_count(count, count_at, 4, "material count");
-    palette.materials.reserve(count);
-    for (uint32_t i = 0; i < count; ++i)
-        palette.materials.push_back(r.fragment_ref("material reference", kWldMaterial, i));
+    const uint32_t count = r.count("material count", 4);
+    palette.materials = r.fragment_refs(count, "material reference", kWldMaterial);
     return palette;
 }
 
 std::vector<uint8_t> write_material_palette(const WldMaterialPalette& palette)
 {
-    WldBodyWriter w;
+    WldByteWriter w;
     w.put(palette.name_ref);
     w.put(palette.flags);
-    w.put(count32(palette.materials, "0x31 materials"));
-    for (const int32_t ref : palette.materials)
-        w.put(ref);
+    w.put_count(palette.materials, "0x31 materials");
+    w.put_each(palette.materials);
     return w.finish();
 }
 
@@ -373,7 +241,7 @@ uint32_t material_fragment_of(const WldFile& wld, uint32_t palette_fragment, uin
     const WldMaterialPalette palette = parse_material_palette(wld, palette_fragment);
     if (material_index >= palette.materials.size())
         throw std::out_of_range("material index " + std::to_string(material_index) + " is past the palette (" +
-                                detail::wld_fragment_label(palette_fragment, kWldMaterialPalette) + " has " +
+                                wld_fragment_label(palette_fragment, kWldMaterialPalette) + " has " +
                                 std::to_string(palette.materials.size()) + " materials)");
     return resolve_fragment_ref(wld, palette.materials[material_index]);
 }

@@ -29,14 +29,8 @@
 
 #include "wld/eq/wld_file.h"
 
-#include <glm/vec2.hpp>
-#include <glm/vec3.hpp>
-
 #include <cstdint>
-#include <cstring>
-#include <span>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace pvs::eq {
@@ -172,85 +166,5 @@ std::string texture_file_of(const WldFile& wld, uint32_t palette_fragment, uint3
 // (decode_render_method) and its sprite_ref is not 0 (WQ and ZU: invisible otherwise). Same
 // exceptions as material_fragment_of.
 bool material_is_visible(const WldFile& wld, uint32_t palette_fragment, uint32_t material_index);
-
-// ---- Internal ----
-
-namespace detail {
-
-// Not API: the fragment-body reader and writer wld_material.cpp and wld_mesh.cpp share (the
-// fragment body helpers of wld_file.cpp are private to that file). The rules and messages are
-// the same: every read stays inside the body, every failure is a FileError at an absolute offset
-// whose reason starts with "fragment N (0xTT name): ".
-class WldBodyReader {
-public:
-    WldBodyReader(const WldFile& wld, uint32_t number, uint32_t expected_type);
-
-    const WldFile& wld() const { return wld_; }
-    uint32_t number() const { return number_; }
-    uint64_t at() const { return body_offset_ + pos_; }
-    uint64_t left() const { return body_size_ - pos_; }
-
-    [[noreturn]] void fail(uint64_t offset, const std::string& reason) const;
-    std::span<const uint8_t> bytes(uint64_t length, const char* what, int64_t index = -1);
-
-    template <class T>
-    T read(const char* what, int64_t index = -1)
-    {
-        static_assert(std::is_arithmetic_v<T>);
-        T value;
-        std::memcpy(&value, bytes(sizeof(T), what, index).data(), sizeof(T)); // little-endian host
-        return value;
-    }
-    glm::vec3 vec3(const char* what, int64_t index = -1);
-
-    // Fails at `count_at` unless `count` elements of at least `min_bytes` each fit in what is
-    // left of the body: called before anything is reserved for them.
-    void check_count(uint64_t count, uint64_t count_at, uint64_t min_bytes, const char* what,
-                     int64_t index = -1) const;
-    // Reads a fragment reference: 0, an earlier fragment of `target_type`, or a name that exists.
-    int32_t fragment_ref(const char* what, uint32_t target_type, int64_t index = -1);
-
-private:
-    const WldFile& wld_;
-    uint32_t number_;
-    uint32_t type_;
-    uint64_t body_offset_ = 0;
-    uint64_t body_size_ = 0;
-    uint64_t pos_ = 0;
-};
-
-// "fragment 12 (0x36 mesh)".
-std::string wld_fragment_label(uint32_t number, uint32_t type);
-
-class WldBodyWriter {
-public:
-    template <class T>
-    void put(T value)
-    {
-        static_assert(std::is_arithmetic_v<T>);
-        uint8_t raw[sizeof(T)];
-        std::memcpy(raw, &value, sizeof(T)); // little-endian host
-        out_.insert(out_.end(), raw, raw + sizeof(T));
-    }
-    void put(glm::vec2 v)
-    {
-        put(v.x);
-        put(v.y);
-    }
-    void put(glm::vec3 v)
-    {
-        put(v.x);
-        put(v.y);
-        put(v.z);
-    }
-    void put_bytes(std::span<const uint8_t> bytes) { out_.insert(out_.end(), bytes.begin(), bytes.end()); }
-    // Bodies are padded to a multiple of 4 with zeros (§2.3, §7.4).
-    std::vector<uint8_t> finish();
-
-private:
-    std::vector<uint8_t> out_;
-};
-
-} // namespace detail
 
 } // namespace pvs::eq

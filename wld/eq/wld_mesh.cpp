@@ -1,5 +1,6 @@
 #include "wld/eq/wld_mesh.h"
 
+#include "wld/eq/wld_body.h"
 #include "wld/eq/wld_material.h"
 
 #include <algorithm>
@@ -10,9 +11,6 @@
 #include <string>
 
 namespace pvs::eq {
-
-using detail::WldBodyReader;
-using detail::WldBodyWriter;
 
 namespace {
 
@@ -41,8 +39,32 @@ std::optional<size_t> palette_size(WldBodyReader& r, int32_t ref, uint64_t ref_a
     const uint32_t type = r.wld().fragments[number - 1].type;
     if (type != kWldMaterialPalette)
         r.fail(ref_at, "material_palette_ref " + std::to_string(ref) + " names " +
-                           detail::wld_fragment_label(number, type) + ", not a 0x31 material palette");
+                           wld_fragment_label(number, type) + ", not a 0x31 material palette");
     return parse_material_palette(r.wld(), number).materials.size();
+}
+
+// N values of T in a row (x, y[, z]), as stored.
+template <glm::length_t N, class T>
+glm::vec<N, T> read_components(WldBodyReader& r, const char* what, int64_t index)
+{
+    glm::vec<N, T> v(T{0});
+    for (glm::length_t k = 0; k < N; ++k)
+        v[k] = r.read<T>(what, index);
+    return v;
+}
+
+// `count` elements of two u16 (skin groups, face and vertex material groups), in file order.
+template <class Pair>
+std::vector<Pair> read_u16_pairs(WldBodyReader& r, uint16_t count, const char* what)
+{
+    std::vector<Pair> pairs;
+    pairs.reserve(count);
+    for (uint16_t i = 0; i < count; ++i) {
+        const auto first = r.read<uint16_t>(what, i);
+        const auto second = r.read<uint16_t>(what, i);
+        pairs.push_back({first, second});
+    }
+    return pairs;
 }
 
 float decode_coordinate(float center, int16_t raw, uint16_t scale)
@@ -76,7 +98,7 @@ WldMesh parse_mesh(const WldFile& wld, uint32_t fragment_number)
     m.flags = r.read<uint32_t>("flags");
     const uint64_t palette_at = r.at();
     m.material_palette_ref = r.fragment_ref("material_palette_ref", kWldMaterialPalette);
-    m.animation_ref = r.fragment_ref("animation_ref", 0);
+    m.animation_ref = r.fragment_ref("animation_ref", kWldAnyFragmentType);
     m.fragment3 = r.read<int32_t>("fragment3");
     m.fragment4 = r.read<int32_t>("fragment4");
     const uint64_t center_at = r.at();
@@ -108,36 +130,23 @@ WldMesh parse_mesh(const WldFile& wld, uint32_t fragment_number)
     const uint16_t nv = check(kVertices, 6);
     m.positions.reserve(nv);
     for (uint16_t i = 0; i < nv; ++i) {
-        const auto x = r.read<int16_t>("vertex", i);
-        const auto y = r.read<int16_t>("vertex", i);
-        const auto z = r.read<int16_t>("vertex", i);
-        m.positions.emplace_back(decode_coordinate(m.center.x, x, m.scale), decode_coordinate(m.center.y, y, m.scale),
-                                 decode_coordinate(m.center.z, z, m.scale));
+        const auto raw = read_components<3, int16_t>(r, "vertex", i);
+        m.positions.emplace_back(decode_coordinate(m.center.x, raw.x, m.scale),
+                                 decode_coordinate(m.center.y, raw.y, m.scale),
+                                 decode_coordinate(m.center.z, raw.z, m.scale));
     }
 
     const bool uv16 = m.uv_form == WldUvForm::I16;
     const uint16_t nt = check(kUvs, uv16 ? 4 : 8);
     m.uvs.reserve(nt);
-    for (uint16_t i = 0; i < nt; ++i) {
-        if (uv16) {
-            const auto u = r.read<int16_t>("uv", i);
-            const auto v = r.read<int16_t>("uv", i);
-            m.uvs.emplace_back(float(u) / 256.0f, float(v) / 256.0f);
-        } else {
-            const auto u = r.read<float>("uv", i);
-            const auto v = r.read<float>("uv", i);
-            m.uvs.emplace_back(u, v);
-        }
-    }
+    for (uint16_t i = 0; i < nt; ++i)
+        m.uvs.push_back(uv16 ? glm::vec2(read_components<2, int16_t>(r, "uv", i)) / 256.0f
+                             : read_components<2, float>(r, "uv", i));
 
     const uint16_t nn = check(kNormals, 3);
     m.normals.reserve(nn);
-    for (uint16_t i = 0; i < nn; ++i) {
-        const auto x = r.read<int8_t>("normal", i);
-        const auto y = r.read<int8_t>("normal", i);
-        const auto z = r.read<int8_t>("normal", i);
-        m.normals.emplace_back(float(x) / 127.0f, float(y) / 127.0f, float(z) / 127.0f);
-    }
+    for (uint16_t i = 0; i < nn; ++i)
+        m.normals.push_back(glm::vec3(read_components<3, int8_t>(r, "normal", i)) / 127.0f);
 
     const uint16_t nc = check(kColors, 4);
     m.colors.reserve(nc);
@@ -159,41 +168,28 @@ WldMesh parse_mesh(const WldFile& wld, uint32_t fragment_number)
         }
     }
 
-    const uint16_t ns = check(kSkinGroups, 4);
-    m.skin_groups.reserve(ns);
-    for (uint16_t i = 0; i < ns; ++i) {
-        const auto count = r.read<uint16_t>("skin group", i);
-        const auto bone = r.read<uint16_t>("skin group", i);
-        m.skin_groups.push_back({count, bone});
-    }
+    m.skin_groups = read_u16_pairs<WldSkinGroup>(r, check(kSkinGroups, 4), "skin group");
 
     const uint16_t ng = check(kFaceGroups, 4);
     const std::optional<size_t> materials = palette_size(r, m.material_palette_ref, palette_at);
-    m.face_groups.reserve(ng);
+    const uint64_t groups_at = r.at();
+    m.face_groups = read_u16_pairs<WldMeshGroup>(r, ng, "face material group");
     uint64_t covered = 0;
     for (uint16_t i = 0; i < ng; ++i) {
-        const auto count = r.read<uint16_t>("face material group", i);
-        const uint64_t material_at = r.at();
-        const auto material = r.read<uint16_t>("face material group", i);
-        if (materials && material >= *materials)
-            r.fail(material_at, "face material group " + std::to_string(i) + " names material " +
-                                    std::to_string(material) + " but the palette (fragment " +
-                                    std::to_string(resolve_fragment_ref(wld, m.material_palette_ref)) + ") has " +
-                                    std::to_string(*materials) + " materials");
-        covered += count;
-        m.face_groups.push_back({count, material});
+        const WldMeshGroup group = m.face_groups[i];
+        if (materials && group.material >= *materials)
+            r.fail(groups_at + 4 * uint64_t{i} + 2,
+                   "face material group " + std::to_string(i) + " names material " + std::to_string(group.material) +
+                       " but the palette (fragment " +
+                       std::to_string(resolve_fragment_ref(wld, m.material_palette_ref)) + ") has " +
+                       std::to_string(*materials) + " materials");
+        covered += group.count;
     }
     if (covered != nf)
         r.fail(counts_at + 2 * kFaceGroups, "the face material groups cover " + std::to_string(covered) +
                                                 " faces but face_count is " + std::to_string(nf));
 
-    const uint16_t nh = check(kVertexGroups, 4);
-    m.vertex_groups.reserve(nh);
-    for (uint16_t i = 0; i < nh; ++i) {
-        const auto count = r.read<uint16_t>("vertex material group", i);
-        const auto material = r.read<uint16_t>("vertex material group", i);
-        m.vertex_groups.push_back({count, material});
-    }
+    m.vertex_groups = read_u16_pairs<WldMeshGroup>(r, check(kVertexGroups, 4), "vertex material group");
 
     const uint16_t nm = check(kMeshOps, 6);
     m.mesh_ops.reserve(nm);
@@ -248,7 +244,7 @@ std::vector<uint8_t> write_mesh(const WldMesh& m)
         throw std::invalid_argument("0x36 mesh: the face groups cover " + std::to_string(covered) + " faces of " +
                                     std::to_string(m.faces.size()));
 
-    WldBodyWriter w;
+    WldByteWriter w;
     w.put(m.name_ref);
     w.put(m.flags);
     w.put(m.material_palette_ref);
@@ -256,13 +252,11 @@ std::vector<uint8_t> write_mesh(const WldMesh& m)
     w.put(m.fragment3);
     w.put(m.fragment4);
     w.put(m.center);
-    for (const uint32_t p : m.params2)
-        w.put(p);
+    w.put_each(m.params2);
     w.put(m.max_distance);
     w.put(m.min);
     w.put(m.max);
-    for (const uint16_t c : counts)
-        w.put(c);
+    w.put_each(counts);
     w.put(scale);
 
     for (const glm::vec3 p : m.positions)
@@ -289,12 +283,10 @@ std::vector<uint8_t> write_mesh(const WldMesh& m)
                                             " does not fit an i8 / 127");
             w.put(static_cast<int8_t>(raw));
         }
-    for (const uint32_t c : m.colors)
-        w.put(c);
+    w.put_each(m.colors);
     for (const WldMeshFace& f : m.faces) {
         w.put(f.flags);
-        for (const uint16_t v : f.vertices)
-            w.put(v);
+        w.put_each(f.vertices);
     }
     for (const WldSkinGroup& g : m.skin_groups) {
         w.put(g.vertex_count);
