@@ -3,6 +3,8 @@
 #include "app/progress_bar.h"
 #include "visibility/bit_row.h"
 #include "visibility/file_error.h"
+#include "visibility/portal/box_clusters.h"
+#include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
 #include "wld/common/read_file.h"
@@ -82,6 +84,8 @@ std::string check_options(const BakeOptions& o)
         return "--level must be 0..4, not " + std::to_string(o.level);
     if (o.sky != "sky-to-sky" && o.sky != "all" && o.sky != "none")
         return "--sky must be sky-to-sky, all or none, not '" + o.sky + "'";
+    if (o.clusters != "none" && o.clusters != "auto")
+        return "--clusters must be none or auto, not '" + o.clusters + "'";
     if (!o.prt_out.empty() && o.prt_out == o.output)
         return "--write-prt and -o name the same file";
     return {};
@@ -103,8 +107,8 @@ Input load_input(const std::string& path)
 }
 
 // --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
-// the zone's regions.
-PortalSet portals_from_file(const std::string& prt_path, const Zone& zone, const std::string& zone_path)
+// the zone's regions. A PRT2 / PRT1-AM file's portals name its clusters.
+quake::PrtFile portals_from_file(const std::string& prt_path, const Zone& zone, const std::string& zone_path)
 {
     quake::PrtFile prt = quake::load_prt(prt_path);
     if (prt.leaf_count != zone.region_count())
@@ -112,7 +116,7 @@ PortalSet portals_from_file(const std::string& prt_path, const Zone& zone, const
                         "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
                             std::to_string(zone.region_count()) +
                             " regions (PRT leaf k must be region k: a portal file of another map?)");
-    return std::move(prt.portals);
+    return prt;
 }
 
 SkyPortals sky_mode(const std::string& name)
@@ -155,8 +159,11 @@ struct BakeRun {
     std::string portal_source = "tree";
     std::optional<PortalStats> portal_stats;
     double portal_seconds = 0.0;
+    std::optional<RegionClusters> clusters; // set when the bake runs over clusters
+    bool portals_name_clusters = false;     // from a PRT2 / PRT1-AM file: portals are between clusters
     Pvs pvs;
     VisReport report;
+    ClusterReport cluster_report;
 };
 
 void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
@@ -204,6 +211,12 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
     if (run.portal_stats)
         j["leaks"] = {{"leaves_touching_world", run.portal_stats->leaves_touching_world.size()},
                       {"leaves_touching_outside", run.portal_stats->leaves_touching_outside.size()}};
+    j["clusters"] = run.clusters ? nlohmann::json{{"clusters", run.cluster_report.clusters},
+                                                  {"cluster_portals", run.cluster_report.cluster_portals},
+                                                  {"portals_inside_clusters", run.cluster_report.portals_inside_clusters},
+                                                  {"cluster_mean_visible", run.cluster_report.cluster_mean_visible},
+                                                  {"expand_seconds", run.cluster_report.expand_seconds}}
+                                 : nlohmann::json(nullptr);
     j["file_pvs"] = in.zone.baked_pvs ? compare_with_file(run.pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
     return j;
 }
@@ -222,8 +235,15 @@ void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FIL
 {
     const auto start = std::chrono::steady_clock::now();
     if (!o.prt_in.empty()) {
-        run.portals = portals_from_file(o.prt_in, zone, o.input);
+        quake::PrtFile prt = portals_from_file(o.prt_in, zone, o.input);
+        run.portals = std::move(prt.portals);
         run.portal_source = o.prt_in;
+        if (prt.has_clusters()) {
+            run.clusters = RegionClusters{std::move(prt.cluster_of_leaf), prt.cluster_count};
+            run.portals_name_clusters = true;
+            std::fprintf(err, "clusters: %s groups %zu leaves in %u clusters\n", o.prt_in.c_str(), zone.region_count(),
+                         run.clusters->cluster_count);
+        }
     } else {
         PortalOptions options;
         options.sky = sky_mode(o.sky);
@@ -242,6 +262,23 @@ void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FIL
         std::fprintf(err, "warning: %s has no portals: every region will see only itself\n", o.input.c_str());
 }
 
+// --clusters auto: box clusters for a zone whose regions are boxes, none for a Quake map.
+void choose_clusters(const BakeOptions& o, const Input& in, BakeRun& run, std::FILE* err)
+{
+    if (o.clusters != "auto" || run.portals_name_clusters) // a PRT2 file's own clusters are used
+        return;
+    if (in.format == InputFormat::QuakeBsp) {
+        std::fprintf(err, "note: --clusters auto: a Quake map is baked per leaf (its PVS is per leaf)\n");
+        return;
+    }
+    if (!regions_are_boxes(in.zone.regions, run.portals)) {
+        std::fprintf(err, "note: --clusters auto: the regions of %s are not boxes; baked per region\n", o.input.c_str());
+        return;
+    }
+    run.clusters = box_merge_clusters(in.zone.regions, run.portals);
+    std::fprintf(err, "clusters: %zu regions in %u box clusters\n", in.zone.region_count(), run.clusters->cluster_count);
+}
+
 bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, const std::atomic<bool>* cancel)
 {
     VisParams params;
@@ -253,9 +290,37 @@ bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, 
         bar.update(fraction);
         return !(cancel && cancel->load());
     };
-    run.pvs = bake_portal_vis(run.portals, uint32_t(zone.region_count()), params, &run.report);
+    if (run.portals_name_clusters)
+        run.pvs = bake_cluster_portal_vis(run.portals, run.clusters->cluster_of_region, run.clusters->cluster_count,
+                                          params, &run.report, &run.cluster_report);
+    else if (run.clusters)
+        run.pvs = bake_clustered_portal_vis(run.portals, run.clusters->cluster_of_region, run.clusters->cluster_count,
+                                            params, &run.report, &run.cluster_report);
+    else
+        run.pvs = bake_portal_vis(run.portals, uint32_t(zone.region_count()), params, &run.report);
     bar.finish(run.report.cancelled ? "cancelled" : "done");
     return !run.report.cancelled;
+}
+
+// --write-prt: PRT1 of the portals used, or PRT2 (cluster portals and the cluster map) when the
+// bake ran over clusters.
+void write_portal_file(const std::string& path, const Zone& zone, const BakeRun& run, std::FILE* err)
+{
+    quake::PrtFile prt;
+    prt.leaf_count = uint32_t(zone.region_count());
+    if (!run.clusters) {
+        prt.portals = run.portals;
+    } else {
+        prt.version = quake::PrtVersion::Prt2;
+        prt.cluster_count = run.clusters->cluster_count;
+        prt.cluster_of_leaf = run.clusters->cluster_of_region;
+        prt.portals = run.portals_name_clusters
+                          ? run.portals
+                          : cluster_portal_set(run.portals, run.clusters->cluster_of_region, prt.cluster_count);
+    }
+    quake::save_prt(path, prt);
+    std::fprintf(err, "wrote %s: %s, %zu portals\n", path.c_str(), run.clusters ? "PRT2" : "PRT1",
+                 prt.portals.portals.size());
 }
 
 int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
@@ -272,16 +337,15 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
     }
     BakeRun run;
     find_portals(o, in.zone, run, err);
+    choose_clusters(o, in, run, err);
     if (!bake(o, in.zone, run, err, cancel)) {
         std::fprintf(err, "pvscope: bake cancelled: nothing was written\n");
         return kExitCancelled;
     }
     const auto write_start = std::chrono::steady_clock::now();
     write_output(o, in, run.pvs, err);
-    if (!o.prt_out.empty()) {
-        quake::save_prt(o.prt_out, {uint32_t(in.zone.region_count()), run.portals});
-        std::fprintf(err, "wrote %s: %zu portals\n", o.prt_out.c_str(), run.portals.portals.size());
-    }
+    if (!o.prt_out.empty())
+        write_portal_file(o.prt_out, in.zone, run, err);
     const double write_seconds = seconds_since(write_start);
     std::fprintf(err, "%s: %zu regions, %zu portals (%zu skipped), mean visible %.1f, %.2f s (base %.2f s), %u threads\n",
                  o.method.c_str(), in.zone.region_count(), run.report.portals, run.report.portals_skipped,
@@ -354,10 +418,15 @@ void register_bake_command(CLI::App& app, int& exit_code)
                                      "all (-transsky), none (as id's shipped maps)")
         ->check(CLI::IsMember({"sky-to-sky", "all", "none"}))
         ->capture_default_str();
-    cmd->add_option("--prt", o->prt_in, "Read the portals from this PRT1 file (leaf k = region k) instead of "
-                                        "building them from the BSP tree")
+    cmd->add_option("--clusters", o->clusters, "none: bake per region; auto: over box clusters when the regions "
+                                               "are boxes (generated zones; faster, looser), per leaf for Quake")
+        ->check(CLI::IsMember({"none", "auto"}))
+        ->capture_default_str();
+    cmd->add_option("--prt", o->prt_in, "Read the portals from this PRT1 file (leaf k = region k; PRT2 / PRT1-AM: "
+                                        "baked over the file's clusters) instead of building them from the BSP tree")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--write-prt", o->prt_out, "Also write the portals the bake used to this PRT1 file");
+    cmd->add_option("--write-prt", o->prt_out, "Also write the portals the bake used to this file (PRT1; PRT2 when "
+                                               "baked over clusters)");
     cmd->add_option("--report", o->report, "Write a JSON report (times, memory, portals, comparison with the "
                                            "file's own PVS) to this file, '-' for stdout");
     cmd->callback([o, &exit_code] {

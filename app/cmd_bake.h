@@ -1,5 +1,6 @@
 // `pvscope bake FILE --method portal-fast|portal-full [--level L] [--threads N] [--sky MODE]
-//  [--prt IN.prt] [--write-prt OUT.prt] [--report REPORT.json] -o OUT`: compute a PVS with the
+//  [--clusters none|auto] [--prt IN.prt] [--write-prt OUT.prt] [--report REPORT.json] -o OUT`:
+// compute a PVS with the
 // portal-vis baker (visibility/portal/portal_vis.h) and write the zone back in its own format.
 //
 //  - Input: a Quake BSP 29 or an EverQuest .s3d, recognised from the bytes. Portals come from
@@ -10,7 +11,15 @@
 //    other lumps byte-identical (wld/quake/bsp29_vis_writer.h); an .s3d is re-written with the
 //    baked rows as 0x22 VISLISTs (write_zone). OUT must end in the input format's extension
 //    (.bsp / .s3d), otherwise the command refuses and says so (use `pvscope convert` after).
-//  - --write-prt writes the portals the bake used as PRT1 (leaf k = region k).
+//  - --write-prt writes the portals the bake used as PRT1 (leaf k = region k), or as PRT2 (the
+//    cluster portals and the cluster map, §2.2) when the bake ran over clusters. --prt reads
+//    PRT2 and PRT1-AM too: the bake then runs over the file's clusters (whatever --clusters says).
+//  - --clusters auto bakes over clusters of regions (visibility/portal/cluster_vis.h) when the
+//    zone's regions are boxes (regions_are_boxes: generated zones), grouped by
+//    box_merge_clusters: much faster and lighter on big zones, a looser PVS (every region of a
+//    cluster gets the cluster's row). A Quake map, or a zone whose regions are not boxes, is
+//    baked per region and a note says so (a Quake map's PVS is per leaf). none (the default)
+//    always bakes per region.
 //  - --report writes a JSON report (fields documented in docs/baking.md; "-" = stdout).
 //  - Progress on stderr: a bar on a terminal, "bake: 40%" lines otherwise. Ctrl-C (SIGINT)
 //    cancels: nothing is written and the exit code is 130.
@@ -32,6 +41,7 @@ struct BakeOptions {
     int level = 4;                      // portal-full's separator test level, 0..4
     unsigned threads = 0;               // 0 = all cores
     std::string sky = "sky-to-sky";     // sky-to-sky | all | none (PortalOptions::sky)
+    std::string clusters = "none";      // none | auto (see above)
     std::string prt_in;                 // portals from this PRT1 file instead of the tree
     std::string prt_out;                // also write the portals used as PRT1
     std::string report;                 // JSON report path, "-" for stdout

@@ -26,6 +26,11 @@ void attach_sibling_prt(Zone& zone, const std::string& bsp_path)
         throw FileError(prt_path.string(), 0,
                         "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + bsp_path + " has " +
                             std::to_string(zone.region_count()) + " vis leaves (a portal file of another map?)");
+    if (prt.has_clusters()) { // PRT2 / PRT1-AM: its portals join clusters, not regions
+        zone.source.notes.push_back(prt_path.filename().string() +
+                                    " is a clustered portal file (PRT2 / PRT1-AM): its portals are not shown");
+        return;
+    }
     zone.portals = std::move(prt.portals);
     zone.source.notes.push_back("portals from " + prt_path.filename().string());
 }

@@ -4,21 +4,29 @@
 //  - the baseline, measured in the same run: "reference-full" and "reference-fast", the baker as
 //    it was before the speed work of issue 6 (tests/bench/reference/), same input, same rows;
 //  - BM_VisScaling/<method>/rooms:<n>: generated zones (wld/gen, GenParams::bake off, seed 1) of
-//    50, 150, 500 and 1500 rooms (5000 with --vis_max_rooms=5000), 2 threads, with their regions
-//    and portals as counters.
+//    50, 150, 500, 1500 and 5000 rooms, 2 threads, with their regions and portals as counters:
+//    portal-fast and portal-full over single regions up to 1500 rooms (5000 with
+//    --vis_max_rooms=5000: 100-190 CPU-s and 1.3-1.9 GB each, docs/performance.md), and
+//    clustered-fast and clustered-full over box clusters (box_clusters.h, cluster_vis.h) at
+//    every size (--vis_cluster_max_rooms=N lowers the largest), with clusters and
+//    cluster_portals as counters. Each scaling bake runs once: its figures come from that run.
 // Counters: peak_MB_est (VisReport::peak_bytes_estimate), rss_peak_MB (the process's real peak
 // resident set during the bake: VmHWM, reset before it through /proc/self/clear_refs; it includes
 // the loaded map, ~rss_before_MB), mean_visible, wait_s (threads waiting for an older portal),
 // cpu_s (CPU seconds of all threads per bake: steadier than the wall clock when the machine is
 // shared).
 // After the run a summary prints the ratios (reference / new, same map and threads) and the
-// growth exponents of the scaling runs (least squares of log time on log portals), and
+// growth exponents of the scaling runs (least squares of log time, wall and CPU, on log portals
+// and log regions of the zone), and
 // --vis_csv=FILE writes the scaling rows for tests/bench/tools/plot_vis_scaling.
 //
 //   build/tests/bench/bench_vis --benchmark_filter='BM_Vis/' --benchmark_counters_tabular=true
 //   build/tests/bench/bench_vis --benchmark_filter='BM_VisScaling' --vis_csv=/tmp/vis_scaling.csv
+//   build/tests/bench/plot_vis_scaling /tmp/vis_scaling.csv docs/images/vis_scaling.png
 #include "tests/bench/reference/portal_vis_reference.h"
 #include "tests/support/test_data.h"
+#include "visibility/portal/box_clusters.h"
+#include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
 #include "wld/gen/generate_zone.h"
@@ -35,6 +43,7 @@
 #include <cstring>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -49,6 +58,8 @@ using Method = VisParams::Method;
 struct VisInput {
     uint32_t regions = 0;
     PortalSet portals;
+    RegionClusters clusters; // generated zones only: box_merge_clusters with its defaults
+    double cluster_seconds = 0.0; // forming them (not part of the timed bake)
 };
 
 const VisInput* quake_input(const std::string& map)
@@ -83,6 +94,9 @@ const VisInput& generated_input(int rooms)
         slot = std::make_unique<VisInput>();
         slot->regions = uint32_t(zone.region_count());
         slot->portals = build_zone_portals(zone);
+        const auto start = std::chrono::steady_clock::now();
+        slot->clusters = box_merge_clusters(zone.regions, slot->portals);
+        slot->cluster_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return *slot;
 }
@@ -153,9 +167,9 @@ size_t bits_only_in(const Pvs& a, const Pvs& b)
 struct ScalingRow {
     std::string method;
     int rooms = 0;
-    uint32_t regions = 0;
-    size_t portals = 0;
-    double seconds = 0.0, cpu_seconds = 0.0, mean_visible = 0.0, peak_mb = 0.0;
+    uint32_t regions = 0, clusters = 0; // clusters: the regions for an unclustered bake
+    size_t portals = 0, cluster_portals = 0;
+    double seconds = 0.0, cpu_seconds = 0.0, mean_visible = 0.0, peak_mb = 0.0, rss_peak_mb = 0.0;
 };
 
 std::vector<ScalingRow>& scaling_rows()
@@ -173,9 +187,10 @@ Pvs bake(bool reference, const VisInput& in, Method method, unsigned threads, Vi
                      : bake_portal_vis(in.portals, in.regions, params, &report);
 }
 
-// Times bakes of `in`; returns the mean seconds per bake. `last`, when given, gets the last result.
-double run_bakes(benchmark::State& state, bool reference, const VisInput& in, Method method, unsigned threads,
-                 Pvs* last = nullptr)
+// Times `bake_once` (a bake of `in`, filling the report) with the counters below; returns the mean
+// seconds per bake. `last`, when given, gets the last result; `last_report` its report.
+double run_timed(benchmark::State& state, const VisInput& in, const std::function<Pvs(VisReport&)>& bake_once,
+                 Pvs* last = nullptr, VisReport* last_report = nullptr)
 {
     VisReport report;
     double total = 0.0, cpu_total = 0.0, rss_peak = 0.0, rss_before = 0.0;
@@ -184,7 +199,7 @@ double run_bakes(benchmark::State& state, bool reference, const VisInput& in, Me
         reset_peak_rss();
         const auto start = std::chrono::steady_clock::now();
         const double cpu_start = process_cpu_seconds();
-        Pvs pvs = bake(reference, in, method, threads, report);
+        Pvs pvs = bake_once(report);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         cpu_total += process_cpu_seconds() - cpu_start;
         state.SetIterationTime(seconds);
@@ -203,7 +218,17 @@ double run_bakes(benchmark::State& state, bool reference, const VisInput& in, Me
     state.counters["wait_s"] = report.wait_seconds;
     const double iterations = double(std::max<benchmark::IterationCount>(state.iterations(), 1));
     state.counters["cpu_s"] = cpu_total / iterations;
+    if (last_report)
+        *last_report = report;
     return total / iterations;
+}
+
+// Times bakes of `in` by the new baker or the reference; see run_timed.
+double run_bakes(benchmark::State& state, bool reference, const VisInput& in, Method method, unsigned threads,
+                 Pvs* last = nullptr)
+{
+    return run_timed(
+        state, in, [&](VisReport& report) { return bake(reference, in, method, threads, report); }, last);
 }
 
 const char* method_name(bool reference, Method method)
@@ -247,30 +272,63 @@ BENCHMARK_CAPTURE(BM_Vis, portal_fast, false, Method::Fast)->Apply(vis_args)->Mi
 BENCHMARK_CAPTURE(BM_Vis, reference_full, true, Method::Full)->Apply(vis_args)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Vis, portal_full, false, Method::Full)->Apply(vis_args)->Iterations(1);
 
-void BM_VisScaling(benchmark::State& state, Method method, int rooms)
+const char* scaling_name(bool clustered, Method method)
+{
+    if (clustered)
+        return method == Method::Full ? "clustered-full" : "clustered-fast";
+    return method_name(false, method);
+}
+
+// One bake of a generated zone, timed once; the row for the summary comes from that same bake.
+void BM_VisScaling(benchmark::State& state, Method method, int rooms, bool clustered)
 {
     const VisInput& in = generated_input(rooms);
-    const double seconds = run_bakes(state, false, in, method, 2);
     VisReport report;
-    bake(false, in, method, 2, report); // once more, for the report's figures (not timed)
-    scaling_rows().push_back({method_name(false, method), rooms, in.regions, in.portals.portals.size(), seconds,
-                              state.counters["cpu_s"].value, report.mean_visible,
-                              double(report.peak_bytes_estimate) / (1024.0 * 1024.0)});
+    ClusterReport cluster_report;
+    const double seconds =
+        clustered ? run_timed(
+                        state, in,
+                        [&](VisReport& r) {
+                            VisParams params;
+                            params.method = method;
+                            params.threads = 2;
+                            return bake_clustered_portal_vis(in.portals, in.clusters.cluster_of_region,
+                                                             in.clusters.cluster_count, params, &r, &cluster_report);
+                        },
+                        nullptr, &report)
+                  : run_timed(
+                        state, in, [&](VisReport& r) { return bake(false, in, method, 2, r); }, nullptr, &report);
+    ScalingRow row{scaling_name(clustered, method), rooms, in.regions, in.regions, in.portals.portals.size(),
+                   in.portals.portals.size(), seconds, state.counters["cpu_s"].value, report.mean_visible,
+                   double(report.peak_bytes_estimate) / (1024.0 * 1024.0), state.counters["rss_peak_MB"].value};
+    if (clustered) {
+        row.clusters = cluster_report.clusters;
+        row.cluster_portals = cluster_report.cluster_portals;
+        state.counters["expand_s"] = cluster_report.expand_seconds;
+        state.counters["clusters_s"] = in.cluster_seconds;
+        state.counters["cluster_mean_visible"] = cluster_report.cluster_mean_visible;
+    }
+    state.counters["clusters"] = double(row.clusters);
+    state.counters["cluster_portals"] = double(row.cluster_portals);
+    scaling_rows().push_back(row);
 }
-// Registered from main: 50, 150, 500 and 1500 rooms, and 5000 with --vis_max_rooms=5000 (its
-// base vis alone needs ~0.8 GB of bit rows and more than 5 CPU-minutes here; docs/performance.md).
-void register_scaling(int max_rooms)
+
+// Registered from main: unclustered at 50, 150, 500 and 1500 rooms, and 5000 with
+// --vis_max_rooms=5000 (two bit rows of 43 000 regions per directed portal: 1.3-1.9 GB, and
+// minutes of CPU: docs/performance.md); clustered at all five sizes (--vis_cluster_max_rooms).
+void register_scaling(int max_rooms, int max_cluster_rooms)
 {
-    for (Method method : {Method::Fast, Method::Full})
-        for (int rooms : {50, 150, 500, 1500, 5000}) {
-            if (rooms > max_rooms)
-                continue;
-            const std::string name = std::string("BM_VisScaling/") + method_name(false, method) + "/rooms:" +
-                                     std::to_string(rooms);
-            benchmark::RegisterBenchmark(name.c_str(), [method, rooms](benchmark::State& state) {
-                BM_VisScaling(state, method, rooms);
-            })->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
-        }
+    for (bool clustered : {false, true})
+        for (Method method : {Method::Fast, Method::Full})
+            for (int rooms : {50, 150, 500, 1500, 5000}) {
+                if (rooms > (clustered ? max_cluster_rooms : max_rooms))
+                    continue;
+                const std::string name = std::string("BM_VisScaling/") + scaling_name(clustered, method) +
+                                         "/rooms:" + std::to_string(rooms);
+                benchmark::RegisterBenchmark(name.c_str(), [method, rooms, clustered](benchmark::State& state) {
+                    BM_VisScaling(state, method, rooms, clustered);
+                })->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(1);
+            }
 }
 
 // Least-squares slope of log(y) on log(x).
@@ -309,24 +367,31 @@ void print_summary(const std::string& csv_path)
     }
     if (scaling_rows().empty())
         return;
-    std::printf("\nScaling (generated zones, 2 threads)\n  method       rooms regions portals   seconds     cpu_s  mean_vis  peak_MB\n");
-    std::map<std::string, std::vector<double>> by_portals, by_regions, times;
+    std::printf("\nScaling (generated zones, 2 threads)\n  method           rooms regions clusters portals "
+                "c_portals   seconds     cpu_s  mean_vis  peak_MB   rss_MB\n");
+    std::map<std::string, std::vector<double>> by_portals, by_regions, times, cpu_times;
     for (const ScalingRow& r : scaling_rows()) {
-        std::printf("  %-12s %5d %7u %7zu %9.3f %9.3f %9.1f %8.1f\n", r.method.c_str(), r.rooms, r.regions,
-                    r.portals, r.seconds, r.cpu_seconds, r.mean_visible, r.peak_mb);
+        std::printf("  %-15s %6d %7u %8u %7zu %9zu %9.3f %9.3f %9.1f %8.1f %8.1f\n", r.method.c_str(), r.rooms,
+                    r.regions, r.clusters, r.portals, r.cluster_portals, r.seconds, r.cpu_seconds, r.mean_visible,
+                    r.peak_mb, r.rss_peak_mb);
         by_portals[r.method].push_back(double(r.portals));
         by_regions[r.method].push_back(double(r.regions));
         times[r.method].push_back(r.seconds);
+        cpu_times[r.method].push_back(std::max(r.cpu_seconds, 1e-6));
     }
     for (const auto& [method, t] : times)
-        std::printf("  %s: time ~ portals^%.2f, ~ regions^%.2f\n", method.c_str(), growth_exponent(by_portals[method], t),
-                    growth_exponent(by_regions[method], t));
+        std::printf("  %s: wall ~ portals^%.2f, ~ regions^%.2f; cpu ~ portals^%.2f, ~ regions^%.2f\n", method.c_str(),
+                    growth_exponent(by_portals[method], t), growth_exponent(by_regions[method], t),
+                    growth_exponent(by_portals[method], cpu_times[method]),
+                    growth_exponent(by_regions[method], cpu_times[method]));
     if (!csv_path.empty()) {
         std::ofstream csv(csv_path);
-        csv << "method,rooms,regions,portals,seconds,cpu_seconds,mean_visible,peak_mb\n";
+        csv << "method,rooms,regions,clusters,portals,cluster_portals,seconds,cpu_seconds,mean_visible,peak_mb,"
+               "rss_peak_mb\n";
         for (const ScalingRow& r : scaling_rows())
-            csv << r.method << ',' << r.rooms << ',' << r.regions << ',' << r.portals << ',' << r.seconds << ','
-                << r.cpu_seconds << ',' << r.mean_visible << ',' << r.peak_mb << '\n';
+            csv << r.method << ',' << r.rooms << ',' << r.regions << ',' << r.clusters << ',' << r.portals << ','
+                << r.cluster_portals << ',' << r.seconds << ',' << r.cpu_seconds << ',' << r.mean_visible << ','
+                << r.peak_mb << ',' << r.rss_peak_mb << '\n';
         std::printf("  rows written to %s\n", csv_path.c_str());
     }
 }
@@ -337,13 +402,15 @@ void print_summary(const std::string& csv_path)
 int main(int argc, char** argv)
 {
     std::string csv_path;
-    int max_rooms = 1500;
+    int max_rooms = 1500, max_cluster_rooms = 5000;
     std::vector<char*> args;
     for (int i = 0; i < argc; ++i) {
         if (std::strncmp(argv[i], "--vis_csv=", 10) == 0)
             csv_path = argv[i] + 10;
         else if (std::strncmp(argv[i], "--vis_max_rooms=", 16) == 0)
             max_rooms = std::atoi(argv[i] + 16);
+        else if (std::strncmp(argv[i], "--vis_cluster_max_rooms=", 24) == 0)
+            max_cluster_rooms = std::atoi(argv[i] + 24);
         else
             args.push_back(argv[i]);
     }
@@ -351,7 +418,7 @@ int main(int argc, char** argv)
     benchmark::Initialize(&count, args.data());
     if (benchmark::ReportUnrecognizedArguments(count, args.data()))
         return 1;
-    pvs::register_scaling(max_rooms);
+    pvs::register_scaling(max_rooms, max_cluster_rooms);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     pvs::print_summary(csv_path);

@@ -212,8 +212,9 @@ TEST(PrtFile, EmptyOrWrongMagicIsRefused)
 {
     EXPECT_PRT_ERROR("", "empty file");
     EXPECT_PRT_ERROR(" \n\t ", "empty file");
-    EXPECT_PRT_ERROR("PRT2\n3\n2\n2\n", "PRT2 portal files (ericw-tools detail clusters) are not supported");
-    EXPECT_PRT_ERROR("PRT1-AM\n2\n1\n3\n", "PRT1-AM portal files");
+    // PRT2 and PRT1-AM are read (tests/wld/test_prt2_file.cpp): these headers lack their portals.
+    EXPECT_PRT_ERROR("PRT2\n3\n2\n2\n", "portal 0 of 2 is missing");
+    EXPECT_PRT_ERROR("PRT1-AM\n2\n1\n3\n", "portal 0 of 1 is missing");
     EXPECT_PRT_ERROR("PRT3\n3\n1\n", "unknown portal file version 'PRT3'");
     EXPECT_PRT_ERROR(std::string("\x1d\x00\x00\x00\xff\xfe", 6), "binary data");
     EXPECT_PRT_ERROR("prt1\n3\n1\n", "expected the PRT1 header, found 'prt1'");

@@ -83,11 +83,23 @@ public:
 
     PrtFile parse()
     {
-        read_magic();
         PrtFile prt;
-        const int64_t leaf_count = read_count("leaf count");
-        const int64_t portal_count = read_count("portal count");
+        prt.version = read_magic();
+        int64_t leaf_count = 0, cluster_count = 0, portal_count = 0;
+        if (prt.version == PrtVersion::Prt1) {
+            leaf_count = read_count("leaf count");
+            portal_count = read_count("portal count");
+        } else if (prt.version == PrtVersion::Prt2) {
+            leaf_count = read_count("leaf count");
+            cluster_count = read_count("cluster count");
+            portal_count = read_count("portal count");
+        } else {
+            cluster_count = read_count("cluster count");
+            portal_count = read_count("portal count");
+            leaf_count = read_count("leaf count");
+        }
         prt.leaf_count = static_cast<uint32_t>(leaf_count);
+        prt.cluster_count = static_cast<uint32_t>(cluster_count);
 
         const size_t remaining = text_.size() - pos_;
         const size_t portals_to_reserve = std::min(static_cast<size_t>(portal_count), remaining / kMinPortalBytes);
@@ -96,15 +108,20 @@ public:
 
         for (int64_t i = 0; i < portal_count; ++i)
             read_portal(prt, i, portal_count);
+        if (prt.version == PrtVersion::Prt2)
+            read_cluster_lines(prt);
+        else if (prt.version == PrtVersion::Prt1Am)
+            read_leaf_clusters(prt);
 
         skip_space();
         if (pos_ < text_.size()) {
             const size_t start = pos_;
             const std::string_view token = any_token();
             int64_t ignored = 0;
-            std::string reason = "unexpected " + quoted(token) + " after the last of " + std::to_string(portal_count) +
-                                 " portals; only whitespace may follow";
-            if (parse_integer(token, ignored) == NumberStatus::Ok)
+            std::string reason = "unexpected " + quoted(token) + " after the last of " +
+                                 (prt.has_clusters() ? "the cluster map" : std::to_string(portal_count) + " portals") +
+                                 "; only whitespace may follow";
+            if (!prt.has_clusters() && parse_integer(token, ignored) == NumberStatus::Ok)
                 reason += " (a Quake 3 portal file has a face count and face lines here; only PRT1 is supported)";
             fail(start, reason);
         }
@@ -144,7 +161,7 @@ private:
         return token;
     }
 
-    void read_magic()
+    PrtVersion read_magic()
     {
         skip_space();
         if (pos_ == text_.size())
@@ -154,17 +171,66 @@ private:
             ++pos_;
         const std::string_view magic = text_.substr(start, pos_ - start);
         if (magic == "PRT1")
-            return;
+            return PrtVersion::Prt1;
         if (magic == "PRT2")
-            fail(start, "PRT2 portal files (ericw-tools detail clusters) are not supported; only PRT1 is");
+            return PrtVersion::Prt2;
         if (magic == "PRT1-AM")
-            fail(start, "PRT1-AM portal files (cluster numbers plus a leaf-to-cluster map) are not supported; "
-                        "only PRT1 is");
+            return PrtVersion::Prt1Am;
         if (is_binary(magic))
             fail(start, "not a portal file: expected the PRT1 header, found binary data " + quoted(magic));
         if (magic.starts_with("PRT"))
-            fail(start, "unknown portal file version " + quoted(magic) + "; only PRT1 is supported");
+            fail(start, "unknown portal file version " + quoted(magic) + "; PRT1, PRT2 and PRT1-AM are supported");
         fail(start, "not a portal file: expected the PRT1 header, found " + quoted(magic));
+    }
+
+    // PRT2: line c lists the leaves of cluster c, ending with -1. Every leaf exactly once.
+    void read_cluster_lines(PrtFile& prt)
+    {
+        constexpr uint32_t kNone = ~0u;
+        // Each leaf is listed once, in at least two bytes ("0 "): a header declaring more leaves
+        // than the rest of the text can list must not drive the allocation below.
+        skip_space();
+        const size_t remaining = text_.size() - pos_;
+        if (prt.leaf_count > remaining / 2 + 1)
+            fail(pos_, "the header declares " + std::to_string(prt.leaf_count) + " leaves, but the " +
+                           std::to_string(remaining) + " bytes left cannot list them in cluster lines");
+        prt.cluster_of_leaf.assign(prt.leaf_count, kNone);
+        for (uint32_t cluster = 0; cluster < prt.cluster_count; ++cluster) {
+            const std::string where = "cluster " + std::to_string(cluster) + " of " + std::to_string(prt.cluster_count);
+            for (;;) {
+                size_t at = 0;
+                const int64_t leaf = read_portal_integer("leaf number or -1", where, at);
+                if (leaf == -1)
+                    break;
+                if (leaf < 0 || leaf >= static_cast<int64_t>(prt.leaf_count))
+                    fail(at, where + ": leaf number " + std::to_string(leaf) + " is out of range (the header declares " +
+                                 std::to_string(prt.leaf_count) + " leaves)");
+                uint32_t& slot = prt.cluster_of_leaf[static_cast<size_t>(leaf)];
+                if (slot != kNone)
+                    fail(at, where + ": leaf " + std::to_string(leaf) + " is already in cluster " + std::to_string(slot));
+                slot = cluster;
+            }
+        }
+        const auto unlisted = std::find(prt.cluster_of_leaf.begin(), prt.cluster_of_leaf.end(), kNone);
+        if (unlisted != prt.cluster_of_leaf.end())
+            fail(pos_, "leaf " + std::to_string(unlisted - prt.cluster_of_leaf.begin()) + " is in no cluster (" +
+                           std::to_string(prt.cluster_count) + " cluster lines read)");
+    }
+
+    // PRT1-AM: the cluster of each leaf, leaf_count integers.
+    void read_leaf_clusters(PrtFile& prt)
+    {
+        prt.cluster_of_leaf.reserve(std::min<size_t>(prt.leaf_count, (text_.size() - pos_) / 2 + 1));
+        for (uint32_t leaf = 0; leaf < prt.leaf_count; ++leaf) {
+            const std::string where = "the cluster map, leaf " + std::to_string(leaf) + " of " +
+                                      std::to_string(prt.leaf_count);
+            size_t at = 0;
+            const int64_t cluster = read_portal_integer("cluster number", where, at);
+            if (cluster < 0 || cluster >= static_cast<int64_t>(prt.cluster_count))
+                fail(at, where + ": cluster number " + std::to_string(cluster) + " is out of range (the header declares " +
+                             std::to_string(prt.cluster_count) + " clusters)");
+            prt.cluster_of_leaf.push_back(static_cast<uint32_t>(cluster));
+        }
     }
 
     int64_t read_count(const char* what)
@@ -234,11 +300,15 @@ private:
         if (point_count < kPrtMinPoints || point_count > kPrtMaxPoints)
             fail(count_at, where + " has " + std::to_string(point_count) + " points; a portal needs " +
                                std::to_string(kPrtMinPoints) + " to " + std::to_string(kPrtMaxPoints));
+        const bool clusters = prt.has_clusters();
+        const uint32_t limit = clusters ? prt.cluster_count : prt.leaf_count;
+        const std::string unit = clusters ? "cluster" : "leaf";
+        const std::string units = clusters ? "clusters" : "leaves";
         const auto check_leaf = [&](int64_t leaf, size_t at) {
-            if (leaf < 0 || leaf >= static_cast<int64_t>(prt.leaf_count))
-                fail(at, where + ": leaf number " + std::to_string(leaf) + " is out of range (the header declares " +
-                             std::to_string(prt.leaf_count) + " leaves" +
-                             (prt.leaf_count > 0 ? ", numbered 0.." + std::to_string(prt.leaf_count - 1) : "") + ")");
+            if (leaf < 0 || leaf >= static_cast<int64_t>(limit))
+                fail(at, where + ": " + unit + " number " + std::to_string(leaf) + " is out of range (the header declares " +
+                             std::to_string(limit) + " " + units +
+                             (limit > 0 ? ", numbered 0.." + std::to_string(limit - 1) : "") + ")");
         };
         check_leaf(leaf0, leaf0_at);
         check_leaf(leaf1, leaf1_at);
@@ -315,6 +385,21 @@ void append_number(std::string& out, float value)
     out.append(buffer, result.ptr);
 }
 
+// PRT2's cluster lines: each cluster's leaves in increasing order, then -1 (validated map).
+void append_cluster_lines(std::string& out, const PrtFile& prt)
+{
+    std::vector<std::vector<uint32_t>> leaves(prt.cluster_count);
+    for (uint32_t leaf = 0; leaf < prt.leaf_count; ++leaf)
+        leaves[prt.cluster_of_leaf[leaf]].push_back(leaf);
+    for (const std::vector<uint32_t>& cluster : leaves) {
+        for (const uint32_t leaf : cluster) {
+            out += std::to_string(leaf);
+            out += ' ';
+        }
+        out += "-1\n";
+    }
+}
+
 void validate_for_writing(const PrtFile& prt)
 {
     const auto bad = [](const std::string& reason) { throw std::invalid_argument("format_prt: " + reason); };
@@ -322,6 +407,17 @@ void validate_for_writing(const PrtFile& prt)
         bad("leaf count " + std::to_string(prt.leaf_count) + " is too large");
     if (prt.portals.portals.size() > static_cast<uint64_t>(kMaxCount))
         bad("too many portals");
+    if (prt.has_clusters()) {
+        if (prt.cluster_count > static_cast<uint64_t>(kMaxCount))
+            bad("cluster count " + std::to_string(prt.cluster_count) + " is too large");
+        if (prt.cluster_of_leaf.size() != prt.leaf_count)
+            bad("the cluster map has " + std::to_string(prt.cluster_of_leaf.size()) + " entries for " +
+                std::to_string(prt.leaf_count) + " leaves");
+        for (size_t leaf = 0; leaf < prt.cluster_of_leaf.size(); ++leaf)
+            if (prt.cluster_of_leaf[leaf] >= prt.cluster_count)
+                bad("leaf " + std::to_string(leaf) + " has cluster " + std::to_string(prt.cluster_of_leaf[leaf]) +
+                    ", out of range for " + std::to_string(prt.cluster_count) + " clusters");
+    }
     const std::vector<glm::vec3>& points = prt.portals.points;
     for (size_t i = 0; i < prt.portals.portals.size(); ++i) {
         const Portal& portal = prt.portals.portals[i];
@@ -331,10 +427,11 @@ void validate_for_writing(const PrtFile& prt)
         if (static_cast<uint64_t>(portal.first_point) + portal.point_count > points.size())
             bad(where + ": points " + std::to_string(portal.first_point) + "+" + std::to_string(portal.point_count) +
                 " run past the " + std::to_string(points.size()) + " points of the set");
+        const uint32_t limit = prt.has_clusters() ? prt.cluster_count : prt.leaf_count;
         for (const int32_t region : portal.regions)
-            if (region < 0 || static_cast<uint32_t>(region) >= prt.leaf_count)
-                bad(where + ": leaf " + std::to_string(region) + " is out of range for " +
-                    std::to_string(prt.leaf_count) + " leaves");
+            if (region < 0 || static_cast<uint32_t>(region) >= limit)
+                bad(where + ": " + (prt.has_clusters() ? "cluster " : "leaf ") + std::to_string(region) +
+                    " is out of range for " + std::to_string(limit) + (prt.has_clusters() ? " clusters" : " leaves"));
         for (uint32_t p = 0; p < portal.point_count; ++p)
             for (int axis = 0; axis < 3; ++axis)
                 if (!std::isfinite(points[portal.first_point + p][axis]))
@@ -358,7 +455,10 @@ PrtFile load_prt(const std::string& path)
 std::string format_prt(const PrtFile& prt)
 {
     validate_for_writing(prt);
-    std::string out = "PRT1\n" + std::to_string(prt.leaf_count) + "\n" + std::to_string(prt.portals.portals.size()) + "\n";
+    std::string out = prt.has_clusters() ? "PRT2\n" + std::to_string(prt.leaf_count) + "\n" +
+                                               std::to_string(prt.cluster_count) + "\n"
+                                         : "PRT1\n" + std::to_string(prt.leaf_count) + "\n";
+    out += std::to_string(prt.portals.portals.size()) + "\n";
     out.reserve(out.size() + prt.portals.portals.size() * 16 + prt.portals.points.size() * 24);
     for (const Portal& portal : prt.portals.portals) {
         out += std::to_string(portal.point_count);
@@ -378,6 +478,8 @@ std::string format_prt(const PrtFile& prt)
         }
         out += '\n';
     }
+    if (prt.has_clusters())
+        append_cluster_lines(out, prt);
     return out;
 }
 

@@ -1,6 +1,8 @@
 // plot_vis_scaling CSV PNG [COLUMN]: a log-log plot of bake time (COLUMN, default cpu_seconds)
 // against portals, one line per method, from the rows bench_vis --vis_csv writes (a header line
-// naming the columns, among them method, portals and COLUMN). Written
+// naming the columns, among them method, portals and COLUMN). The legend gives each method's
+// fitted growth exponent (least squares of log COLUMN on log portals). Methods whose name starts
+// with "clustered" are drawn dashed (clustered-fast is then the colour of portal-fast). Written
 // for docs/images/vis_scaling.png without a plotting library: lines and text (stb_easy_font)
 // rasterised by hand, the PNG written by stb_image_write.
 #define STB_IMAGE_WRITE_STATIC
@@ -77,6 +79,18 @@ std::string format_value(double v)
     return buffer;
 }
 
+// Least-squares slope of log(seconds) on log(portals).
+double growth_exponent(const std::vector<Point>& points)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const Point& p : points) {
+        const double lx = std::log(p.portals), ly = std::log(p.seconds);
+        sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly;
+    }
+    const double n = double(points.size()), denominator = n * sxx - sx * sx;
+    return points.size() < 2 || denominator == 0.0 ? 0.0 : (n * sxy - sx * sy) / denominator;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -150,20 +164,38 @@ int main(int argc, char** argv)
     img.line(left, bottom, right, bottom, 2, axis);
     img.line(left, top, left, bottom, 2, axis);
     img.text(left, 18, "Portal vis bake on generated zones, 2 threads, log-log: " + column, 2, axis);
-    img.text((left + right) / 2 - 60, bottom + 40, "portals", 2, axis);
+    img.text((left + right) / 2 - 200, bottom + 40, "portals of the zone (before clustering)", 2, axis);
     img.text(10, top - 30, column, 2, axis);
 
-    const Rgb colours[] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {148, 103, 189}};
+    // fast: blue, full: red; a method named otherwise takes green, then purple.
+    const auto colour_of = [](const std::string& method) -> Rgb {
+        if (method.find("fast") != std::string::npos)
+            return {31, 119, 180};
+        if (method.find("full") != std::string::npos)
+            return {214, 39, 40};
+        return method.size() % 2 ? Rgb{44, 160, 44} : Rgb{148, 103, 189};
+    };
     int index = 0;
     for (const auto& [method, points] : series) {
-        const Rgb c = colours[index % 4];
-        for (size_t i = 0; i + 1 < points.size(); ++i)
-            img.line(px(points[i].portals), py(points[i].seconds), px(points[i + 1].portals),
-                     py(points[i + 1].seconds), 3, c);
+        const Rgb c = colour_of(method);
+        const bool dashed = method.rfind("clustered", 0) == 0;
+        for (size_t i = 0; i + 1 < points.size(); ++i) {
+            const double x0 = px(points[i].portals), y0 = py(points[i].seconds);
+            const double x1 = px(points[i + 1].portals), y1 = py(points[i + 1].seconds);
+            const int dashes = dashed ? std::max(1, int(std::hypot(x1 - x0, y1 - y0) / 24.0)) : 1;
+            for (int d = 0; d < dashes; ++d) {
+                const double t0 = double(d) / dashes, t1 = dashed ? (d + 0.6) / dashes : 1.0;
+                img.line(x0 + t0 * (x1 - x0), y0 + t0 * (y1 - y0), x0 + t1 * (x1 - x0), y0 + t1 * (y1 - y0), 3, c);
+            }
+        }
         for (const Point& p : points)
             img.dot(px(p.portals), py(p.seconds), 5, c);
-        img.line(left + 20, top + 20 + 25 * index, left + 60, top + 20 + 25 * index, 3, c);
-        img.text(left + 70, top + 13 + 25 * index, method, 2, axis);
+        const double legend_y = top + 20 + 25 * index;
+        img.line(left + 20, legend_y, left + 36, legend_y, 3, c);
+        img.line(left + (dashed ? 44 : 36), legend_y, left + 60, legend_y, 3, c);
+        char exponent[32];
+        std::snprintf(exponent, sizeof exponent, " ~ portals^%.2f", growth_exponent(points));
+        img.text(left + 70, legend_y - 7, method + exponent, 2, axis);
         ++index;
     }
     if (!stbi_write_png(argv[2], img.width, img.height, 3, img.pixels.data(), img.width * 3)) {
