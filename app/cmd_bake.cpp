@@ -199,6 +199,8 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                         {"regions", regions},
                         {"time_seconds", r.seconds},
                         {"base_seconds", r.base_seconds},
+                        {"passage_pairs", r.passage_pairs},
+                        {"passage_seconds", r.passage_seconds},
                         {"load_seconds", load_seconds},
                         {"portalize_seconds", run.portal_seconds},
                         {"write_seconds", write_seconds},
@@ -285,6 +287,8 @@ bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, 
     params.method = o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
     params.level = o.level;
     params.threads = o.threads;
+    if (!o.passages)
+        params.passage_budget_bytes = 0;
     ProgressBar bar(err, "bake");
     params.progress = [&](double fraction) {
         bar.update(fraction);
@@ -421,6 +425,10 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_option("--clusters", o->clusters, "none: bake per region; auto: over box clusters when the regions "
                                                "are boxes (generated zones; faster, looser), per leaf for Quake")
         ->check(CLI::IsMember({"none", "auto"}))
+        ->capture_default_str();
+    cmd->add_option("--passages", o->passages, "portal-full: prune the flow with passages (true: about half the "
+                                               "time on Quake maps; false: faster on open generated zones); the "
+                                               "rows are the same")
         ->capture_default_str();
     cmd->add_option("--prt", o->prt_in, "Read the portals from this PRT1 file (leaf k = region k; PRT2 / PRT1-AM: "
                                         "baked over the file's clusters) instead of building them from the BSP tree")

@@ -42,6 +42,7 @@ struct BakeOptions {
     unsigned threads = 0;               // 0 = all cores
     std::string sky = "sky-to-sky";     // sky-to-sky | all | none (PortalOptions::sky)
     std::string clusters = "none";      // none | auto (see above)
+    bool passages = true;               // portal-full: prune the flow with passages (VisParams)
     std::string prt_in;                 // portals from this PRT1 file instead of the tree
     std::string prt_out;                // also write the portals used as PRT1
     std::string report;                 // JSON report path, "-" for stdout

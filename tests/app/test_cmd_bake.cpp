@@ -174,6 +174,26 @@ TEST_F(Bake, PortalsFromAPrtFileAreTheOnesBaked)
     EXPECT_FALSE(report.contains("leaks"));
 }
 
+// --passages false runs the plain flow: the same file, and the report says no passages were built.
+TEST_F(Bake, PassagesOffWritesTheSameFile)
+{
+    SHARED_DATA_OR_SKIP(input, "quake/end.bsp");
+    app::BakeOptions o;
+    o.input = input;
+    o.threads = 2;
+    o.output = path("with.bsp");
+    o.report = path("with.json");
+    ASSERT_EQ(run(o), 0) << err_;
+    app::BakeOptions off = o;
+    off.passages = false;
+    off.output = path("without.bsp");
+    off.report = path("without.json");
+    ASSERT_EQ(run(off), 0) << err_;
+    EXPECT_EQ(test::read_bytes(o.output), test::read_bytes(off.output));
+    EXPECT_GT(nlohmann::json::parse(read_text(o.report))["passage_pairs"].get<size_t>(), 0u);
+    EXPECT_EQ(nlohmann::json::parse(read_text(off.report))["passage_pairs"].get<size_t>(), 0u);
+}
+
 TEST_F(Bake, AnEverQuestZoneGetsTheBakedRowsAsVislists)
 {
     const Zone generated = gen::generate_zone({8, 5, 32.0f});
