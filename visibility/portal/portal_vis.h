@@ -44,8 +44,9 @@
 // separators, so every leaf it reaches is in the flood: the rows are conservative. The flow
 // then ANDs the row of (the portal it came in by, the target) into the child's mightsee, and
 // a target whose own leaf is not in that row is skipped; each portal's mightsee is first
-// narrowed to its destination plus its passages' rows. These only remove branches that
-// could not add a leaf: on all six maps in ../shared/data/quake the rows are bit-identical to
+// narrowed to its destination plus its passages' rows. In exact arithmetic these only remove
+// branches that could not add a leaf (the flow's own clips are tighter than a passage's); with
+// the epsilons and the 24-point give-up a row could in principle differ, but on all six maps in ../shared/data/quake the rows are bit-identical to
 // the flow without them (tests/wld/test_portal_vis.cpp checks one), at about half the time
 // (docs/performance.md). They cost one row per pair (pairs = sum over directed portals of
 // the portals leaving their destination), kept as the span of words that hold set bits (on
@@ -90,14 +91,15 @@
 // unnormalised normal (d^2 against ON_EPSILON^2 with d's sign: no square root or division for
 // the candidates that fail) starting from the candidate's neighbours on B (where a failing
 // candidate fails), and normalises only the plane it returns, exactly as before; clips classify
-// points without branches. The pre-issue-6 baker is kept in tests/bench/reference/ as the
-// benchmark's baseline: on e1m1, e1m2, start and end the rows are bit-identical to it (the
-// benchmark's summary counts the differing bits: 0). Only round-off in the candidate test could
-// ever differ: a point whose distance to a candidate plane is ±ON_EPSILON to within round-off.
+// points without branches; passages (above) then halve the number of flow steps. The
+// pre-issue-6 baker is kept in tests/bench/reference/ as the benchmark's baseline: on e1m1,
+// e1m2 and start the rows are bit-identical to it (the benchmark's summary counts the differing
+// bits: 0). Only round-off in the candidate test could ever differ: a point whose distance to a
+// candidate plane is ±ON_EPSILON to within round-off.
 //
 // Memory. Two bit rows of region_count bits per directed portal (mightsee, visbits; 64-bit
-// words), the passage rows (above), the portals' points in double, and per thread a stack of frames, grown only when a
-// walk goes deeper than before (a frame holds three fixed 24-point windings and the cached
+// words), the passage rows (above), the portals' points in double, and per thread a stack of
+// frames, grown only when a walk goes deeper than before (a frame holds three fixed 24-point windings and the cached
 // separators, ericw's pstack_t): no allocation inside the walk otherwise.
 #pragma once
 
