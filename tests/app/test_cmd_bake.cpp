@@ -9,6 +9,8 @@
 //    documented exit code, and no output file.
 #include "app/cmd_bake.h"
 
+#include "tests/app/bake_command_fixture.h"
+
 #include "tests/support/test_data.h"
 #include "visibility/bit_row.h"
 #include "visibility/portal/portal_vis.h"
@@ -34,55 +36,13 @@ namespace pvs {
 namespace {
 
 namespace fs = std::filesystem;
-using Rows = std::vector<std::vector<uint64_t>>;
+using test::Rows;
 
-Rows rows_of(const Pvs& pvs)
-{
-    Rows rows(pvs.region_count(), std::vector<uint64_t>(pvs.words_per_row()));
-    for (uint32_t r = 0; r < pvs.region_count(); ++r)
-        pvs.decode_row(r, rows[r]);
-    return rows;
-}
+using test::rows_of;
 
-std::string read_text(const fs::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::read_text;
 
-// A scratch directory per test, removed afterwards.
-class Bake : public ::testing::Test {
-protected:
-    void SetUp() override
-    {
-        dir_ = fs::temp_directory_path() /
-               ("pvscope_bake_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-                std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    // Runs the command with its messages captured in err_.
-    int run(const app::BakeOptions& options, const std::atomic<bool>* cancel = nullptr)
-    {
-        std::FILE* err = std::tmpfile();
-        const int code = app::run_bake(options, err, cancel);
-        std::rewind(err);
-        err_.clear();
-        char buffer[4096];
-        size_t n;
-        while ((n = std::fread(buffer, 1, sizeof buffer, err)) > 0)
-            err_.append(buffer, n);
-        std::fclose(err);
-        return code;
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    fs::path dir_;
-    std::string err_;
-};
+class Bake : public test::BakeCommand {};
 
 Pvs bake_directly(const PortalSet& portals, uint32_t regions, VisParams::Method method)
 {

@@ -1,0 +1,72 @@
+// What the `pvscope bake` command tests share: a scratch directory per test (removed after it),
+// the command run through its function with its messages captured, and a PVS as plain rows to
+// compare. Header-only, used by test_cmd_bake.cpp and test_cmd_bake_clusters.cpp.
+#pragma once
+
+#include "app/cmd_bake.h"
+#include "visibility/pvs.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace pvs::test {
+
+using Rows = std::vector<std::vector<uint64_t>>;
+
+inline Rows rows_of(const Pvs& pvs)
+{
+    Rows rows(pvs.region_count(), std::vector<uint64_t>(pvs.words_per_row()));
+    for (uint32_t r = 0; r < pvs.region_count(); ++r)
+        pvs.decode_row(r, rows[r]);
+    return rows;
+}
+
+inline std::string read_text(const std::filesystem::path& path)
+{
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class BakeCommand : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        dir_ = std::filesystem::temp_directory_path() /
+               ("pvscope_bake_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+                std::to_string(::getpid()));
+        std::filesystem::create_directories(dir_);
+    }
+    void TearDown() override { std::filesystem::remove_all(dir_); }
+
+    // Runs the command with its messages captured in err_.
+    int run(const app::BakeOptions& options, const std::atomic<bool>* cancel = nullptr)
+    {
+        std::FILE* err = std::tmpfile();
+        const int code = app::run_bake(options, err, cancel);
+        std::rewind(err);
+        err_.clear();
+        char buffer[4096];
+        size_t n;
+        while ((n = std::fread(buffer, 1, sizeof buffer, err)) > 0)
+            err_.append(buffer, n);
+        std::fclose(err);
+        return code;
+    }
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    std::filesystem::path dir_;
+    std::string err_;
+};
+
+} // namespace pvs::test
