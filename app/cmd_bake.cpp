@@ -201,6 +201,8 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                         {"base_seconds", r.base_seconds},
                         {"passage_pairs", r.passage_pairs},
                         {"passage_seconds", r.passage_seconds},
+                        {"target_checks", r.target_checks},
+                        {"target_check_prunes", r.target_check_prunes},
                         {"load_seconds", load_seconds},
                         {"portalize_seconds", run.portal_seconds},
                         {"write_seconds", write_seconds},
@@ -289,6 +291,7 @@ bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, 
     params.threads = o.threads;
     if (!o.passages)
         params.passage_budget_bytes = 0;
+    params.target_checks = o.target_checks;
     ProgressBar bar(err, "bake");
     params.progress = [&](double fraction) {
         bar.update(fraction);
@@ -429,6 +432,10 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_option("--passages", o->passages, "portal-full: prune the flow with passages (true: about half the "
                                                "time on Quake maps; false: faster on open generated zones); the "
                                                "rows are the same")
+        ->capture_default_str();
+    cmd->add_option("--target-checks", o->target_checks, "portal-full: before walking into a leaf already seen, "
+                                                         "check that a leaf not yet seen is still reachable "
+                                                         "(true: about a third faster on Quake maps)")
         ->capture_default_str();
     cmd->add_option("--prt", o->prt_in, "Read the portals from this PRT1 file (leaf k = region k; PRT2 / PRT1-AM: "
                                         "baked over the file's clusters) instead of building them from the BSP tree")

@@ -43,6 +43,7 @@ struct BakeOptions {
     std::string sky = "sky-to-sky";     // sky-to-sky | all | none (PortalOptions::sky)
     std::string clusters = "none";      // none | auto (see above)
     bool passages = true;               // portal-full: prune the flow with passages (VisParams)
+    bool target_checks = true;          // portal-full: target checks before re-entering a seen leaf (VisParams)
     std::string prt_in;                 // portals from this PRT1 file instead of the tree
     std::string prt_out;                // also write the portals used as PRT1
     std::string report;                 // JSON report path, "-" for stdout

@@ -154,6 +154,32 @@ TEST_F(Bake, PassagesOffWritesTheSameFile)
     EXPECT_EQ(nlohmann::json::parse(read_text(off.report))["passage_pairs"].get<size_t>(), 0u);
 }
 
+TEST_F(Bake, TargetChecksCanBeSwitchedOffAndOnlyEverRemoveBits)
+{
+    SHARED_DATA_OR_SKIP(input, "quake/end.bsp");
+    app::BakeOptions o;
+    o.input = input;
+    o.threads = 2;
+    o.output = path("with.bsp");
+    o.report = path("with.json");
+    ASSERT_EQ(run(o), 0) << err_;
+    app::BakeOptions off = o;
+    off.target_checks = false;
+    off.output = path("without.bsp");
+    off.report = path("without.json");
+    ASSERT_EQ(run(off), 0) << err_;
+    EXPECT_GT(nlohmann::json::parse(read_text(o.report))["target_checks"].get<size_t>(), 0u);
+    EXPECT_EQ(nlohmann::json::parse(read_text(off.report))["target_checks"].get<size_t>(), 0u);
+    const Zone with = quake::load_bsp29(test::read_bytes(o.output), o.output);
+    const Zone without = quake::load_bsp29(test::read_bytes(off.output), off.output);
+    ASSERT_TRUE(with.baked_pvs.has_value() && without.baked_pvs.has_value());
+    const Rows a = rows_of(*with.baked_pvs), b = rows_of(*without.baked_pvs);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t r = 0; r < a.size(); ++r)
+        for (size_t w = 0; w < a[r].size(); ++w)
+            EXPECT_EQ(a[r][w] & ~b[r][w], 0u) << "leaf " << r << " sees more with target checks";
+}
+
 TEST_F(Bake, AnEverQuestZoneGetsTheBakedRowsAsVislists)
 {
     const Zone generated = gen::generate_zone({8, 5, 32.0f});

@@ -498,6 +498,43 @@ TEST(PortalVis, PassagesChangeNoRowOnARealMap)
                 b->full_report.passage_seconds, report.seconds);
 }
 
+// Target checks only remove bits (they prune walks and narrow mightsee; every frame the flow
+// still enters is clipped exactly as before). A bit they remove is one the flow's own
+// approximations let through deeper down (portal_vis.h, "Target checks"): it must not be a bit
+// the map's own vis, made elsewhere, found.
+TEST(PortalVis, TargetChecksDropOnlyBitsTheMapsOwnVisLacks)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    const std::string map = "quake/end.bsp";
+#else
+    const std::string map = "quake/e1m2.bsp";
+#endif
+    SHARED_DATA_OR_SKIP(path, map);
+    const QuakeBake* b = quake_bake(map);
+    ASSERT_NE(b, nullptr);
+    EXPECT_GT(b->full_report.target_check_prunes, 0u) << "the checks should prune walks on a Quake map";
+    EXPECT_LE(b->full_report.target_check_prunes, b->full_report.target_checks);
+    VisParams params;
+    params.threads = 2;
+    params.target_checks = false;
+    VisReport report;
+    const Rows plain = rows_of(bake_portal_vis(b->portals, b->regions, params, &report));
+    EXPECT_EQ(report.target_checks, 0u);
+    size_t added = 0, dropped = 0, dropped_but_in_file = 0;
+    for (uint32_t r = 0; r < b->regions; ++r)
+        for (size_t w = 0; w < plain[r].size(); ++w) {
+            added += size_t(std::popcount(b->full[r][w] & ~plain[r][w]));
+            dropped += size_t(std::popcount(plain[r][w] & ~b->full[r][w]));
+            dropped_but_in_file += size_t(std::popcount(plain[r][w] & ~b->full[r][w] & b->file[r][w]));
+        }
+    EXPECT_EQ(added, 0u);
+    EXPECT_EQ(dropped_but_in_file, 0u);
+    std::printf("[ %-7s ] Full with target checks %.3f s (%zu checks, %zu walks pruned, %zu bits dropped), "
+                "without %.3f s\n",
+                test::param_name(map).c_str(), b->full_report.seconds, b->full_report.target_checks,
+                b->full_report.target_check_prunes, dropped, report.seconds);
+}
+
 void expect_only_self(const Pvs& pvs, uint32_t n)
 {
     ASSERT_EQ(pvs.region_count(), n);

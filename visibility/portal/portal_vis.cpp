@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cassert>
 #include <chrono>
 #include <cmath>
@@ -38,6 +39,7 @@ constexpr uint32_t kMaxSeparators = 64;       // MAX_SEPARATORS: cached planes p
 constexpr uint32_t kCancelCheckSteps = 1024;  // flow steps between looks at the cancel flag
 constexpr double kBaseWeight = 0.1;           // Full: share of the progress bar given to base vis
 constexpr double kPassageWeight = 0.1;        // Full: share given to the passages, when built
+constexpr uint32_t kTargetCheckLeaves = 16;   // target checks: most unseen leaves worth checking
 
 enum PortalState : uint8_t { kNone = 0, kWorking = 1, kDone = 2, kAborted = 3 };
 
@@ -431,6 +433,9 @@ public:
 
     std::span<const uint64_t> vis() const { return vis_; }
     void use_passages(const Passages* p) { passages_ = p; }
+    void use_target_checks(bool on) { target_checks_ = on; }
+    size_t target_checks() const { return target_check_count_; }
+    size_t target_check_prunes() const { return target_check_prunes_; }
     // The passage row of directed portal ai and the k-th portal leaving its destination.
     void passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t>& mightsee, uint64_t* out);
     size_t leaf_recursions() const { return leaf_recursions_; }
@@ -491,6 +496,25 @@ private:
 
     // Enters `leaf` below the frame at depth_ (false when it is already on the chain).
     bool enter(uint32_t leaf, uint32_t entry);
+    // Leaves the frame at depth_.
+    void leave()
+    {
+        on_stack_[frames_[depth_]->leaf] = 0;
+        --depth_;
+    }
+
+    // `w` clipped by the planes of tests 0 and 1 (as far as level_ asks) of frame f, whose
+    // previous frame is prev. The planes depend only on prev, so f finds them once, edge by
+    // edge as windings need them (SeparatorCache), and every winding meets them in one order.
+    WRef clip_to_frame_separators(WRef w, Frame& f, const Frame& prev, const DPlane& head_plane);
+
+    // The target check of the frame just entered (portal_vis.h, "Target checks"): false when
+    // no leaf the walk below it could add is reachable through its source and pass. Removes
+    // the unreachable ones from its mightsee. Uses the frame's windings as scratch.
+    bool may_add_leaf(const Frame& head);
+    // Whether a portal into `leaf` survives frame f's clips: in front of the head and of the
+    // pass, and inside the planes of tests 0 and 1.
+    bool leaf_reachable(uint32_t leaf, Frame& f, const Frame& prev, const Frame& head);
 
     const Graph& g_;
     int level_;
@@ -506,6 +530,9 @@ private:
     size_t leaf_recursions_ = 0;
     const Passages* passages_ = nullptr;
     std::vector<uint64_t> ones_;
+    bool target_checks_ = false;
+    size_t target_check_count_ = 0;
+    size_t target_check_prunes_ = 0;
 };
 
 void FlowWorker::passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t>& mightsee, uint64_t* out)
@@ -688,6 +715,71 @@ bool FlowWorker::enter(uint32_t leaf, uint32_t entry)
     return true;
 }
 
+WRef FlowWorker::clip_to_frame_separators(WRef w, Frame& f, const Frame& prev, const DPlane& head_plane)
+{
+    for (int t = 0; t < 2 && w && level_ > t; ++t) {
+        SeparatorCache& cache = f.separators[t];
+        const WRef& a = t == 0 ? prev.source : prev.pass;
+        const DPlane& a_plane = t == 0 ? head_plane : prev.portalplane;
+        const WRef& b = t == 0 ? prev.pass : prev.source;
+        for (uint32_t k = 0; w; ++k) {
+            if (k == cache.count) {
+                // More planes are needed: the next edges of A (at most kMaxSeparators kept:
+                // fewer planes clip less, so the result stays conservative).
+                if (cache.next_edge == 0)
+                    sides_to_plane(b, a_plane, cache.b_side.data());
+                bool found = false;
+                while (!found && cache.next_edge < a.count && cache.count < kMaxSeparators)
+                    found = edge_separator(a, b, cache.b_side.data(), cache.next_edge++, t == 1,
+                                           cache.planes[cache.count]);
+                if (!found)
+                    break; // no edge left
+                ++cache.count;
+            }
+            w = clip(w, cache.planes[k], f);
+        }
+    }
+    return w;
+}
+
+bool FlowWorker::may_add_leaf(const Frame& head)
+{
+    Frame& f = *frames_[depth_];
+    Frame& prev = *frames_[depth_ - 1]; // the source, pass and plane f was entered with, f's mightsee
+    uint32_t unseen = 0;
+    for (uint32_t w = prev.lo; w < prev.hi; ++w)
+        unseen += uint32_t(std::popcount(prev.mightsee[w] & ~vis_[w]));
+    if (unseen > kTargetCheckLeaves)
+        return true; // checking them all would cost more than the walk it might save
+    ++target_check_count_;
+    bool any_reachable = false;
+    for (uint32_t w = prev.lo; w < prev.hi; ++w) {
+        for (uint64_t left = prev.mightsee[w] & ~vis_[w]; left != 0; left &= left - 1) {
+            const uint32_t leaf = w * 64 + uint32_t(std::countr_zero(left));
+            if (leaf_reachable(leaf, f, prev, head))
+                any_reachable = true;
+            else
+                prev.mightsee[w] &= ~(uint64_t{1} << (leaf & 63)); // no walk below reaches it
+        }
+    }
+    target_check_prunes_ += !any_reachable;
+    return any_reachable;
+}
+
+bool FlowWorker::leaf_reachable(uint32_t leaf, Frame& f, const Frame& prev, const Frame& head)
+{
+    for (uint32_t k = g_.leaf_first[leaf]; k < g_.leaf_first[leaf + 1]; ++k) {
+        const uint32_t into = g_.leaf_portals[k] ^ 1u; // the twin of a portal out of `leaf` leads in
+        for (bool& used : f.slot_used)
+            used = false;
+        WRef w = clip(portal_winding(into), head.portalplane, f);
+        w = clip(w, prev.portalplane, f);
+        if (clip_to_frame_separators(w, f, prev, head.portalplane))
+            return true;
+    }
+    return false;
+}
+
 template <class PruneRow>
 bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prune_row, const std::atomic<bool>& cancel)
 {
@@ -787,28 +879,7 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
             continue;
 
         // Test 0: source -> pass separators clip the target. Test 1: pass -> source, mirrored.
-        // Both depend only on the previous frame: found once per frame (SeparatorCache), reused.
-        for (int t = 0; t < 2 && pass && level_ > t; ++t) {
-            SeparatorCache& cache = f.separators[t];
-            const WRef& a = t == 0 ? prev.source : prev.pass;
-            const DPlane& a_plane = t == 0 ? head.portalplane : prev.portalplane;
-            const WRef& b = t == 0 ? prev.pass : prev.source;
-            for (uint32_t k = 0; pass; ++k) {
-                if (k == cache.count) {
-                    // More planes are needed: the next edges of A (at most kMaxSeparators kept:
-                    // fewer planes clip less, so the result stays conservative).
-                    if (cache.next_edge == 0)
-                        sides_to_plane(b, a_plane, cache.b_side.data());
-                    bool found = false;
-                    while (!found && cache.next_edge < a.count && cache.count < kMaxSeparators)
-                        found = edge_separator(a, b, cache.b_side.data(), cache.next_edge++, t == 1, cache.planes[cache.count]);
-                    if (!found)
-                        break; // no edge left
-                    ++cache.count;
-                }
-                pass = clip(pass, cache.planes[k], f);
-            }
-        }
+        pass = clip_to_frame_separators(pass, f, prev, head.portalplane);
         if (!pass)
             continue;
         // Test 2: target -> pass separators clip the source. Test 3: pass -> target, mirrored.
@@ -832,7 +903,9 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
         f.pass = pass;
         f.portalplane = q.plane;
         narrow();
-        enter(q.leaf, qi);
+        const bool seen_before = bits::test(vis_, q.leaf);
+        if (enter(q.leaf, qi) && seen_before && target_checks_ && !may_add_leaf(head))
+            leave(); // nothing below could add a leaf
     }
     if (cancelled) {
         for (; depth_ > 0; --depth_)
@@ -1052,6 +1125,7 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
 
     std::atomic<uint64_t> wait_nanos{0};
     std::atomic<size_t> leaf_recursions{0};
+    std::atomic<size_t> target_checks{0}, target_check_prunes{0};
     if (full && base_done) {
         flow_started = true;
         visbits.assign(size_t{n} * words, 0);
@@ -1083,6 +1157,7 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
             rep.threads,
             [&](unsigned) {
                 FlowWorker worker(g, level);
+                worker.use_target_checks(params.target_checks);
                 if (use_passages)
                     worker.use_passages(&passages);
                 uint64_t waited = 0;
@@ -1131,6 +1206,8 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
                     if (!ok)
                         break;
                 }
+                target_checks.fetch_add(worker.target_checks());
+                target_check_prunes.fetch_add(worker.target_check_prunes());
                 wait_nanos.fetch_add(waited);
                 leaf_recursions.fetch_add(worker.leaf_recursions());
                 std::lock_guard lock(worker_bytes_mutex);
@@ -1145,6 +1222,8 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
     }
     rep.cancelled = user_cancel.load();
     rep.leaf_recursions = leaf_recursions.load();
+    rep.target_checks = target_checks.load();
+    rep.target_check_prunes = target_check_prunes.load();
     rep.wait_seconds = double(wait_nanos.load()) * 1e-9;
 
     // Aggregation (§3.5): a region sees what its outgoing portals see, plus itself.

@@ -54,6 +54,21 @@
 // exceed VisParams::passage_budget_bytes the flow runs without them (a decision that depends
 // on their total size only, so the result stays deterministic).
 //
+// Target checks (Method::Full; after ericw's target checks, §3.6, restricted). A walk that
+// enters a leaf already in the portal's visbits can only matter for the leaves it could still
+// add: those of the child's mightsee not yet visible. Before walking on, when there are at most
+// 16 of them, each is checked: a portal into it is clipped to the front of the head's plane and
+// of the pass's plane, then by the frame's separators of tests 0 and 1 (the planes the walk
+// below would cache first anyway). A leaf none of whose portals survives is removed from the
+// child's mightsee; when no leaf survives, the leaf is left at once. In exact arithmetic this
+// removes nothing visible: a line from the source through the pass that reaches such a leaf
+// crosses one of its portals inside those planes. It can remove a bit the plain flow sets
+// where the flow's own approximations (epsilons, first separator per edge, the 24-point
+// give-up) let a portal through deeper down that the check's planes already exclude: on the
+// six maps in ../shared/data/quake, 2 bits in all (e1m2, end), neither set by the maps' own
+// vis either (tests/wld/test_portal_vis.cpp checks it). About a third of the flow's time on
+// those maps (docs/performance.md). VisParams::target_checks turns them off.
+//
 // Aggregation (§3.5): a region sees the union of its outgoing directed portals' visbits, plus
 // itself (VisReport::saw_into_own_region counts regions that already saw themselves, ericw's
 // "portals saw into leaf" warning).
@@ -91,10 +106,11 @@
 // unnormalised normal (d^2 against ON_EPSILON^2 with d's sign: no square root or division for
 // the candidates that fail) starting from the candidate's neighbours on B (where a failing
 // candidate fails), and normalises only the plane it returns, exactly as before; clips classify
-// points without branches; passages (above) then halve the number of flow steps. The
-// pre-issue-6 baker is kept in tests/bench/reference/ as the benchmark's baseline: on e1m1,
-// e1m2 and start the rows are bit-identical to it (the benchmark's summary counts the differing
-// bits: 0). Only round-off in the candidate test could ever differ: a point whose distance to a
+// points without branches; passages (above) then halve the number of flow steps, and target
+// checks (above) cut another third. The pre-issue-6 baker is kept in tests/bench/reference/ as
+// the benchmark's baseline; its summary counts the bits that differ: none on e1m1 and start,
+// one on e1m2 (the target checks' bit above). Without target checks the rows are bit-identical
+// to it; only round-off in the candidate test could ever differ: a point whose distance to a
 // candidate plane is ±ON_EPSILON to within round-off.
 //
 // Memory. Two bit rows of region_count bits per directed portal (mightsee, visbits; 64-bit
@@ -119,6 +135,8 @@ struct VisParams {
     unsigned threads = 0; // 0 = std::thread::hardware_concurrency()
     // Full: passages are built when their rows take at most this many bytes (0 = never).
     size_t passage_budget_bytes = size_t{64} << 20;
+    // Full: target checks (above) before walking on from a leaf already visible.
+    bool target_checks = true;
     // Called on the calling thread with the fraction done in [0, 1]; return false to cancel.
     std::function<bool(double fraction)> progress;
 };
@@ -137,6 +155,8 @@ struct VisReport {
     double wait_seconds = 0.0;     // Full: time worker threads spent waiting for an older portal
     size_t passage_pairs = 0;      // Full: passages built (0: none, over the budget)
     double passage_seconds = 0.0;  // Full: of the bake's time, building them
+    size_t target_checks = 0;       // Full: target checks made
+    size_t target_check_prunes = 0; // Full: of which found that the walk could add no leaf
 };
 
 // Portals older than this many ranks are used for pruning (see Determinism above). Part of the
