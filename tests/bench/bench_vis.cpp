@@ -1,8 +1,11 @@
 // Portal-vis bake time (visibility/portal/portal_vis.h), 1 and 2 worker threads:
 //  - BM_Vis/<method>/<map>/<threads>: portal-fast and portal-full on e1m1, e1m2 and start, the
 //    portals built by pvscope from each map's tree with SkyPortals::None (as the accuracy tests);
-//  - the baseline, measured in the same run: "reference-full" and "reference-fast", the baker as
-//    it was before the speed work of issue 6 (tests/bench/reference/), same input, same rows;
+//  - the baseline, measured in the same run: "plain-full", the same baker with passages and
+//    target checks off (VisParams::passage_budget_bytes = 0, target_checks = false): ericw's flow
+//    as written, same input; the summary counts the bits in which the rows differ (target checks
+//    may only remove some, portal_vis.h). The baker from before issue 6's speed work, which was
+//    the baseline until then, is in git (tests/bench/reference/ at commit a3773cf);
 //  - BM_VisScaling/<method>/rooms:<n>: generated zones (wld/gen, GenParams::bake off, seed 1) of
 //    50, 150, 500, 1500 and 5000 rooms, 2 threads, with their regions and portals as counters:
 //    portal-fast and portal-full over single regions up to 1500 rooms (5000 with
@@ -15,7 +18,7 @@
 // the loaded map, ~rss_before_MB), mean_visible, wait_s (threads waiting for an older portal),
 // cpu_s (CPU seconds of all threads per bake: steadier than the wall clock when the machine is
 // shared).
-// After the run a summary prints the ratios (reference / new, same map and threads) and the
+// After the run a summary prints the ratios (plain / new, same map and threads) and the
 // growth exponents of the scaling runs (least squares of log time, wall and CPU, on log portals
 // and log regions of the zone), and
 // --vis_csv=FILE writes the scaling rows for tests/bench/tools/plot_vis_scaling.
@@ -23,7 +26,6 @@
 //   build/tests/bench/bench_vis --benchmark_filter='BM_Vis/' --benchmark_counters_tabular=true
 //   build/tests/bench/bench_vis --benchmark_filter='BM_VisScaling' --vis_csv=/tmp/vis_scaling.csv
 //   build/tests/bench/plot_vis_scaling /tmp/vis_scaling.csv docs/images/vis_scaling.png
-#include "tests/bench/reference/portal_vis_reference.h"
 #include "tests/support/test_data.h"
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/cluster_vis.h"
@@ -143,7 +145,7 @@ std::map<std::string, double>& cpu_timings()
 }
 
 // The last result of each Quake bake, by the same key: the summary counts the bits in which the
-// new baker and the reference differ.
+// baker and the plain flow differ.
 std::map<std::string, Pvs>& results()
 {
     static std::map<std::string, Pvs> table;
@@ -178,13 +180,17 @@ std::vector<ScalingRow>& scaling_rows()
     return rows;
 }
 
-Pvs bake(bool reference, const VisInput& in, Method method, unsigned threads, VisReport& report)
+// plain: passages and target checks off (the baseline).
+Pvs bake(bool plain, const VisInput& in, Method method, unsigned threads, VisReport& report)
 {
     VisParams params;
     params.method = method;
     params.threads = threads;
-    return reference ? reference::bake_portal_vis_reference(in.portals, in.regions, params, &report)
-                     : bake_portal_vis(in.portals, in.regions, params, &report);
+    if (plain) {
+        params.passage_budget_bytes = 0;
+        params.target_checks = false;
+    }
+    return bake_portal_vis(in.portals, in.regions, params, &report);
 }
 
 // Times `bake_once` (a bake of `in`, filling the report) with the counters below; returns the mean
@@ -223,25 +229,25 @@ double run_timed(benchmark::State& state, const VisInput& in, const std::functio
     return total / iterations;
 }
 
-// Times bakes of `in` by the new baker or the reference; see run_timed.
-double run_bakes(benchmark::State& state, bool reference, const VisInput& in, Method method, unsigned threads,
+// Times bakes of `in` by the baker or the plain flow; see run_timed.
+double run_bakes(benchmark::State& state, bool plain, const VisInput& in, Method method, unsigned threads,
                  Pvs* last = nullptr)
 {
     return run_timed(
-        state, in, [&](VisReport& report) { return bake(reference, in, method, threads, report); }, last);
+        state, in, [&](VisReport& report) { return bake(plain, in, method, threads, report); }, last);
 }
 
-const char* method_name(bool reference, Method method)
+const char* method_name(bool plain, Method method)
 {
-    if (reference)
-        return method == Method::Full ? "reference-full" : "reference-fast";
+    if (plain)
+        return method == Method::Full ? "plain-full" : "plain-fast";
     return method == Method::Full ? "portal-full" : "portal-fast";
 }
 
 // Arguments: the map (index into kMaps), the threads; the method and baseline from the name.
 const char* const kMaps[] = {"e1m1", "e1m2", "start"};
 
-void BM_Vis(benchmark::State& state, bool reference, Method method)
+void BM_Vis(benchmark::State& state, bool plain, Method method)
 {
     const std::string map = kMaps[state.range(0)];
     const VisInput* in = quake_input(map);
@@ -250,9 +256,9 @@ void BM_Vis(benchmark::State& state, bool reference, Method method)
         return;
     }
     const unsigned threads = unsigned(state.range(1));
-    const std::string key = std::string(method_name(reference, method)) + "/" + map + "/" + std::to_string(threads);
+    const std::string key = std::string(method_name(plain, method)) + "/" + map + "/" + std::to_string(threads);
     Pvs last;
-    timings()[key] = run_bakes(state, reference, *in, method, threads, &last);
+    timings()[key] = run_bakes(state, plain, *in, method, threads, &last);
     cpu_timings()[key] = state.counters["cpu_s"].value;
     results()[key] = std::move(last);
     state.SetLabel(map);
@@ -267,9 +273,9 @@ void vis_args(benchmark::internal::Benchmark* b)
     b->UseManualTime()->Unit(benchmark::kMillisecond);
 }
 
-BENCHMARK_CAPTURE(BM_Vis, reference_fast, true, Method::Fast)->Apply(vis_args)->MinTime(0.3);
+// (portal-fast has no passages or target checks: its baseline would be itself.)
 BENCHMARK_CAPTURE(BM_Vis, portal_fast, false, Method::Fast)->Apply(vis_args)->MinTime(0.3);
-BENCHMARK_CAPTURE(BM_Vis, reference_full, true, Method::Full)->Apply(vis_args)->Iterations(1);
+BENCHMARK_CAPTURE(BM_Vis, plain_full, true, Method::Full)->Apply(vis_args)->Iterations(1);
 BENCHMARK_CAPTURE(BM_Vis, portal_full, false, Method::Full)->Apply(vis_args)->Iterations(1);
 
 const char* scaling_name(bool clustered, Method method)
@@ -349,19 +355,19 @@ double growth_exponent(const std::vector<double>& x, const std::vector<double>& 
 
 void print_summary(const std::string& csv_path)
 {
-    std::printf("\nPortal vis: baseline (the pre-issue-6 baker) / new, same run\n");
+    std::printf("\nPortal vis: plain flow (no passages, no target checks) / baker, same run\n");
     for (const auto& [key, seconds] : timings()) {
         if (key.rfind("portal-", 0) != 0)
             continue;
         const std::string rest = key.substr(std::strlen("portal-"));
-        const auto ref = timings().find("reference-" + rest);
+        const auto ref = timings().find("plain-" + rest);
         if (ref == timings().end())
             continue;
         const Pvs& ours = results()[key];
-        const Pvs& theirs = results()["reference-" + rest];
-        const double cpu = cpu_timings()[key], ref_cpu = cpu_timings()["reference-" + rest];
-        std::printf("  %-22s wall %8.3f s (reference %8.3f s, x%.2f)  cpu %8.3f s (reference %8.3f s, x%.2f)  "
-                    "bits only new %zu, only reference %zu\n",
+        const Pvs& theirs = results()["plain-" + rest];
+        const double cpu = cpu_timings()[key], ref_cpu = cpu_timings()["plain-" + rest];
+        std::printf("  %-22s wall %8.3f s (plain %8.3f s, x%.2f)  cpu %8.3f s (plain %8.3f s, x%.2f)  "
+                    "bits only baker %zu, only plain %zu\n",
                     key.c_str(), seconds, ref->second, ref->second / seconds, cpu, ref_cpu, ref_cpu / cpu,
                     bits_only_in(ours, theirs), bits_only_in(theirs, ours));
     }

@@ -107,11 +107,12 @@
 // the candidates that fail) starting from the candidate's neighbours on B (where a failing
 // candidate fails), and normalises only the plane it returns, exactly as before; clips classify
 // points without branches; passages (above) then halve the number of flow steps, and target
-// checks (above) cut another third. The pre-issue-6 baker is kept in tests/bench/reference/ as
-// the benchmark's baseline; its summary counts the bits that differ: none on e1m1 and start,
-// one on e1m2 (the target checks' bit above). Without target checks the rows are bit-identical
-// to it; only round-off in the candidate test could ever differ: a point whose distance to a
-// candidate plane is ±ON_EPSILON to within round-off.
+// checks (above) cut another third. Against the baker from before that work (kept as the
+// benchmark's baseline until commit a3773cf, tests/bench/reference/) the rows differed in one
+// bit on e1m1, e1m2 and start together (the target checks' bit above); without target checks
+// they were bit-identical, as only round-off in the candidate test could ever differ (a point
+// whose distance to a candidate plane is ±ON_EPSILON to within round-off). The benchmark's
+// baseline is now this baker with passages and target checks off.
 //
 // Memory. Two bit rows of region_count bits per directed portal (mightsee, visbits; 64-bit
 // words), the passage rows (above), the portals' points in double, and per thread a stack of
