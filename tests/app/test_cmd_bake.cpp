@@ -31,6 +31,7 @@
 #include <fstream>
 #include <sstream>
 #include <unistd.h>
+#include <utility>
 
 namespace pvs {
 namespace {
@@ -42,7 +43,27 @@ using test::rows_of;
 
 using test::read_text;
 
-class Bake : public test::BakeCommand {};
+class Bake : public test::BakeCommand {
+protected:
+    // Bakes `input` twice with two threads and a report: as given ("with.bsp", "with.json") and
+    // with `switch_off` applied ("without.bsp", "without.json"). Returns the two option sets.
+    std::pair<app::BakeOptions, app::BakeOptions> bake_with_and_without(const std::string& input,
+                                                                        void (*switch_off)(app::BakeOptions&))
+    {
+        app::BakeOptions with;
+        with.input = input;
+        with.threads = 2;
+        with.output = path("with.bsp");
+        with.report = path("with.json");
+        EXPECT_EQ(run(with), 0) << err_;
+        app::BakeOptions without = with;
+        switch_off(without);
+        without.output = path("without.bsp");
+        without.report = path("without.json");
+        EXPECT_EQ(run(without), 0) << err_;
+        return {with, without};
+    }
+};
 
 Pvs bake_directly(const PortalSet& portals, uint32_t regions, VisParams::Method method)
 {
@@ -138,17 +159,7 @@ TEST_F(Bake, PortalsFromAPrtFileAreTheOnesBaked)
 TEST_F(Bake, PassagesOffWritesTheSameFile)
 {
     SHARED_DATA_OR_SKIP(input, "quake/end.bsp");
-    app::BakeOptions o;
-    o.input = input;
-    o.threads = 2;
-    o.output = path("with.bsp");
-    o.report = path("with.json");
-    ASSERT_EQ(run(o), 0) << err_;
-    app::BakeOptions off = o;
-    off.passages = false;
-    off.output = path("without.bsp");
-    off.report = path("without.json");
-    ASSERT_EQ(run(off), 0) << err_;
+    const auto [o, off] = bake_with_and_without(input, [](app::BakeOptions& b) { b.passages = false; });
     EXPECT_EQ(test::read_bytes(o.output), test::read_bytes(off.output));
     EXPECT_GT(nlohmann::json::parse(read_text(o.report))["passage_pairs"].get<size_t>(), 0u);
     EXPECT_EQ(nlohmann::json::parse(read_text(off.report))["passage_pairs"].get<size_t>(), 0u);
@@ -157,17 +168,7 @@ TEST_F(Bake, PassagesOffWritesTheSameFile)
 TEST_F(Bake, TargetChecksCanBeSwitchedOffAndOnlyEverRemoveBits)
 {
     SHARED_DATA_OR_SKIP(input, "quake/end.bsp");
-    app::BakeOptions o;
-    o.input = input;
-    o.threads = 2;
-    o.output = path("with.bsp");
-    o.report = path("with.json");
-    ASSERT_EQ(run(o), 0) << err_;
-    app::BakeOptions off = o;
-    off.target_checks = false;
-    off.output = path("without.bsp");
-    off.report = path("without.json");
-    ASSERT_EQ(run(off), 0) << err_;
+    const auto [o, off] = bake_with_and_without(input, [](app::BakeOptions& b) { b.target_checks = false; });
     EXPECT_GT(nlohmann::json::parse(read_text(o.report))["target_checks"].get<size_t>(), 0u);
     EXPECT_EQ(nlohmann::json::parse(read_text(off.report))["target_checks"].get<size_t>(), 0u);
     const Zone with = quake::load_bsp29(test::read_bytes(o.output), o.output);

@@ -466,35 +466,48 @@ TEST(PortalVis, FullIsTheSameForOneAndTwoThreadsOnARealMap)
                 one_report.mean_visible);
 }
 
+// The map on which the flow's speed-ups are compared with the flow without them: e1m2 in
+// optimised builds, end under the sanitizers (as above).
+#if defined(__SANITIZE_ADDRESS__)
+const char* const kSpeedUpMap = "quake/end.bsp";
+#else
+const char* const kSpeedUpMap = "quake/e1m2.bsp";
+#endif
+
+// The full bake of b's portals with two threads and `switch_off` applied to the parameters.
+Rows full_rows_without(const QuakeBake& b, void (*switch_off)(VisParams&), VisReport& report)
+{
+    VisParams params;
+    params.threads = 2;
+    switch_off(params);
+    return rows_of(bake_portal_vis(b.portals, b.regions, params, &report));
+}
+
+// Bits set in a and not in b, over all rows; with `also_in`, only those also set there.
+size_t bits_only_in(const Rows& a, const Rows& b, const Rows* also_in = nullptr)
+{
+    size_t count = 0;
+    for (size_t r = 0; r < a.size(); ++r)
+        for (size_t w = 0; w < a[r].size(); ++w)
+            count += size_t(std::popcount(a[r][w] & ~b[r][w] & (also_in ? (*also_in)[r][w] : ~uint64_t{0})));
+    return count;
+}
+
 // Passages (portal_vis.h) only cut flow branches that could not add a leaf: without them the
 // flow must give the same rows (an independent run of the unpruned flow, not a stored answer).
 TEST(PortalVis, PassagesChangeNoRowOnARealMap)
 {
-#if defined(__SANITIZE_ADDRESS__)
-    const std::string map = "quake/end.bsp";
-#else
-    const std::string map = "quake/e1m2.bsp";
-#endif
-    SHARED_DATA_OR_SKIP(path, map);
-    const QuakeBake* b = quake_bake(map);
+    SHARED_DATA_OR_SKIP(path, kSpeedUpMap);
+    const QuakeBake* b = quake_bake(kSpeedUpMap);
     ASSERT_NE(b, nullptr);
     EXPECT_GT(b->full_report.passage_pairs, 0u) << "the default budget should fit a Quake map's passages";
-    VisParams params;
-    params.threads = 2;
-    params.passage_budget_bytes = 0;
     VisReport report;
-    const Rows unpruned = rows_of(bake_portal_vis(b->portals, b->regions, params, &report));
+    const Rows unpruned = full_rows_without(*b, [](VisParams& p) { p.passage_budget_bytes = 0; }, report);
     EXPECT_EQ(report.passage_pairs, 0u);
-    size_t only_pruned = 0, only_unpruned = 0;
-    for (uint32_t r = 0; r < b->regions; ++r)
-        for (size_t w = 0; w < unpruned[r].size(); ++w) {
-            only_pruned += size_t(std::popcount(b->full[r][w] & ~unpruned[r][w]));
-            only_unpruned += size_t(std::popcount(unpruned[r][w] & ~b->full[r][w]));
-        }
-    EXPECT_EQ(only_pruned, 0u);
-    EXPECT_EQ(only_unpruned, 0u);
+    EXPECT_EQ(bits_only_in(b->full, unpruned), 0u);
+    EXPECT_EQ(bits_only_in(unpruned, b->full), 0u);
     std::printf("[ %-7s ] Full with passages %.3f s (%zu pairs, %.3f s to build), without %.3f s\n",
-                test::param_name(map).c_str(), b->full_report.seconds, b->full_report.passage_pairs,
+                test::param_name(kSpeedUpMap).c_str(), b->full_report.seconds, b->full_report.passage_pairs,
                 b->full_report.passage_seconds, report.seconds);
 }
 
@@ -504,35 +517,20 @@ TEST(PortalVis, PassagesChangeNoRowOnARealMap)
 // the map's own vis, made elsewhere, found.
 TEST(PortalVis, TargetChecksDropOnlyBitsTheMapsOwnVisLacks)
 {
-#if defined(__SANITIZE_ADDRESS__)
-    const std::string map = "quake/end.bsp";
-#else
-    const std::string map = "quake/e1m2.bsp";
-#endif
-    SHARED_DATA_OR_SKIP(path, map);
-    const QuakeBake* b = quake_bake(map);
+    SHARED_DATA_OR_SKIP(path, kSpeedUpMap);
+    const QuakeBake* b = quake_bake(kSpeedUpMap);
     ASSERT_NE(b, nullptr);
     EXPECT_GT(b->full_report.target_check_prunes, 0u) << "the checks should prune walks on a Quake map";
     EXPECT_LE(b->full_report.target_check_prunes, b->full_report.target_checks);
-    VisParams params;
-    params.threads = 2;
-    params.target_checks = false;
     VisReport report;
-    const Rows plain = rows_of(bake_portal_vis(b->portals, b->regions, params, &report));
+    const Rows plain = full_rows_without(*b, [](VisParams& p) { p.target_checks = false; }, report);
     EXPECT_EQ(report.target_checks, 0u);
-    size_t added = 0, dropped = 0, dropped_but_in_file = 0;
-    for (uint32_t r = 0; r < b->regions; ++r)
-        for (size_t w = 0; w < plain[r].size(); ++w) {
-            added += size_t(std::popcount(b->full[r][w] & ~plain[r][w]));
-            dropped += size_t(std::popcount(plain[r][w] & ~b->full[r][w]));
-            dropped_but_in_file += size_t(std::popcount(plain[r][w] & ~b->full[r][w] & b->file[r][w]));
-        }
-    EXPECT_EQ(added, 0u);
-    EXPECT_EQ(dropped_but_in_file, 0u);
+    EXPECT_EQ(bits_only_in(b->full, plain), 0u);
+    EXPECT_EQ(bits_only_in(plain, b->full, &b->file), 0u);
     std::printf("[ %-7s ] Full with target checks %.3f s (%zu checks, %zu walks pruned, %zu bits dropped), "
                 "without %.3f s\n",
-                test::param_name(map).c_str(), b->full_report.seconds, b->full_report.target_checks,
-                b->full_report.target_check_prunes, dropped, report.seconds);
+                test::param_name(kSpeedUpMap).c_str(), b->full_report.seconds, b->full_report.target_checks,
+                b->full_report.target_check_prunes, bits_only_in(plain, b->full), report.seconds);
 }
 
 void expect_only_self(const Pvs& pvs, uint32_t n)
