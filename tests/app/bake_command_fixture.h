@@ -1,10 +1,15 @@
 // What the `pvscope bake` command tests share: a scratch directory per test (removed after it),
-// the command run through its function with its messages captured, and a PVS as plain rows to
-// compare. Header-only, used by test_cmd_bake.cpp and test_cmd_bake_clusters.cpp.
+// the command run through its function with its messages captured, a generated zone written
+// there as .s3d with the options that bake it, and a PVS as plain rows to compare.
+// Header-only, used by test_cmd_bake.cpp and test_cmd_bake_clusters.cpp.
 #pragma once
 
 #include "app/cmd_bake.h"
+#include "tests/support/test_data.h"
 #include "visibility/pvs.h"
+#include "wld/convert.h"
+#include "wld/eq/eq_zone_reader.h"
+#include "wld/gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 
@@ -28,6 +33,12 @@ inline Rows rows_of(const Pvs& pvs)
     for (uint32_t r = 0; r < pvs.region_count(); ++r)
         pvs.decode_row(r, rows[r]);
     return rows;
+}
+
+// An EverQuest zone read back from an .s3d file.
+inline Zone load_s3d(const std::string& path)
+{
+    return eq::load_eq_zone(test::read_bytes(path), path);
 }
 
 inline std::string read_text(const std::filesystem::path& path)
@@ -64,6 +75,18 @@ protected:
         return code;
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    // Options that bake the zone `generation` makes, written first as zone.s3d, into `output`
+    // (in the scratch directory) with one thread; the other options are the defaults.
+    app::BakeOptions bake_generated(const gen::GenParams& generation, const std::string& output)
+    {
+        app::BakeOptions o;
+        o.input = path("zone.s3d");
+        write_zone(gen::generate_zone(generation), o.input, ZoneOutput::S3d);
+        o.output = path(output);
+        o.threads = 1;
+        return o;
+    }
 
     std::filesystem::path dir_;
     std::string err_;

@@ -16,8 +16,6 @@
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
 #include "wld/convert.h"
-#include "wld/eq/eq_zone_reader.h"
-#include "wld/gen/generate_zone.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
 
@@ -183,18 +181,12 @@ TEST_F(Bake, TargetChecksCanBeSwitchedOffAndOnlyEverRemoveBits)
 
 TEST_F(Bake, AnEverQuestZoneGetsTheBakedRowsAsVislists)
 {
-    const Zone generated = gen::generate_zone({8, 5, 32.0f});
-    const std::string input = path("zone.s3d");
-    write_zone(generated, input, ZoneOutput::S3d);
-    app::BakeOptions o;
-    o.input = input;
-    o.output = path("baked.s3d");
+    app::BakeOptions o = bake_generated({8, 5, 32.0f}, "baked.s3d");
     o.method = "portal-full";
-    o.threads = 1;
     ASSERT_EQ(run(o), 0) << err_;
 
-    const Zone in = eq::load_eq_zone(test::read_bytes(input), input);
-    const Zone out = eq::load_eq_zone(test::read_bytes(o.output), o.output);
+    const Zone in = test::load_s3d(o.input);
+    const Zone out = test::load_s3d(o.output);
     ASSERT_TRUE(out.baked_pvs.has_value());
     const Pvs expected = bake_directly(build_zone_portals(in), uint32_t(in.region_count()), VisParams::Method::Full);
     // The writer stores each row with the region's own bit set (the baker's rows already have it).
@@ -259,7 +251,7 @@ TEST_F(Bake, AZoneWithNoPortalsIsBakedWithWarnings)
     ASSERT_EQ(run(o), 0) << err_;
     EXPECT_NE(err_.find("has no portals: every region will see only itself"), std::string::npos) << err_;
     EXPECT_NE(err_.find("leaks: 1 open leaves touch the world box"), std::string::npos) << err_;
-    const Zone out = eq::load_eq_zone(test::read_bytes(o.output), o.output);
+    const Zone out = test::load_s3d(o.output);
     ASSERT_TRUE(out.baked_pvs.has_value());
     ASSERT_EQ(out.baked_pvs->region_count(), 1u);
     EXPECT_TRUE(out.baked_pvs->visible(0, 0));

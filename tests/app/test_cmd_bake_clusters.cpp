@@ -16,9 +16,6 @@
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
-#include "wld/convert.h"
-#include "wld/eq/eq_zone_reader.h"
-#include "wld/gen/generate_zone.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
 
@@ -42,19 +39,13 @@ class BakeClusters : public test::BakeCommand {};
 
 TEST_F(BakeClusters, AGeneratedZoneIsBakedOverBoxClusters)
 {
-    const Zone generated = gen::generate_zone({30, 5, 32.0f});
-    const std::string input = path("zone.s3d");
-    write_zone(generated, input, ZoneOutput::S3d);
-    app::BakeOptions o;
-    o.input = input;
-    o.output = path("baked.s3d");
+    app::BakeOptions o = bake_generated({30, 5, 32.0f}, "baked.s3d");
     o.report = path("report.json");
     o.clusters = "auto";
-    o.threads = 1;
     ASSERT_EQ(run(o), 0) << err_;
 
-    const Zone in = eq::load_eq_zone(test::read_bytes(input), input);
-    const Zone out = eq::load_eq_zone(test::read_bytes(o.output), o.output);
+    const Zone in = test::load_s3d(o.input);
+    const Zone out = test::load_s3d(o.output);
     ASSERT_TRUE(out.baked_pvs.has_value());
     const PortalSet portals = build_zone_portals(in);
     ASSERT_TRUE(regions_are_boxes(in.regions, portals));
@@ -82,18 +73,12 @@ TEST_F(BakeClusters, AGeneratedZoneIsBakedOverBoxClusters)
 
 TEST_F(BakeClusters, AClusteredBakeWritesPrt2AndBakesTheSameFromIt)
 {
-    const Zone generated = gen::generate_zone({20, 9, 32.0f});
-    const std::string input = path("zone.s3d");
-    write_zone(generated, input, ZoneOutput::S3d);
-    app::BakeOptions o;
-    o.input = input;
-    o.output = path("baked.s3d");
+    app::BakeOptions o = bake_generated({20, 9, 32.0f}, "baked.s3d");
     o.prt_out = path("clusters.prt");
     o.clusters = "auto";
-    o.threads = 1;
     ASSERT_EQ(run(o), 0) << err_;
 
-    const Zone in = eq::load_eq_zone(test::read_bytes(input), input);
+    const Zone in = test::load_s3d(o.input);
     const PortalSet portals = build_zone_portals(in);
     const RegionClusters clusters = box_merge_clusters(in.regions, portals);
     const quake::PrtFile prt = quake::load_prt(o.prt_out);
@@ -113,8 +98,8 @@ TEST_F(BakeClusters, AClusteredBakeWritesPrt2AndBakesTheSameFromIt)
     again.prt_in = o.prt_out;
     again.clusters = "none"; // the file's clusters are used anyway
     ASSERT_EQ(run(again), 0) << err_;
-    const Zone first = eq::load_eq_zone(test::read_bytes(o.output), o.output);
-    const Zone second = eq::load_eq_zone(test::read_bytes(again.output), again.output);
+    const Zone first = test::load_s3d(o.output);
+    const Zone second = test::load_s3d(again.output);
     ASSERT_TRUE(first.baked_pvs && second.baked_pvs);
     EXPECT_EQ(rows_of(*second.baked_pvs), rows_of(*first.baked_pvs));
 }
