@@ -138,6 +138,10 @@ TEST(Prt2File, AHostileClusterCountDoesNotAllocate)
     // on memory (PRT2 would assign its map per declared leaf: refused before that).
     EXPECT_PRT2_ERROR("PRT1-AM\n2147483647\n0\n2147483647\n", "file ends early in the cluster map, leaf 0", 32);
     EXPECT_PRT2_ERROR("PRT2\n2147483647\n1\n0\n", "declares 2147483647 leaves, but the 0 bytes left cannot list them", 20);
+    // More clusters than leaves: a bake over them would cost clusters^2 bits, so the header is
+    // refused at the cluster count, whatever follows.
+    EXPECT_PRT2_ERROR("PRT2\n2\n2147483647\n0\n0 -1\n1 -1\n", "declares 2147483647 clusters for 2 leaves", 7);
+    EXPECT_PRT2_ERROR("PRT1-AM\n3\n0\n2\n0 1\n", "declares 3 clusters for 2 leaves", 8);
 }
 
 TEST(Prt2File, AClusteredSiblingPortalFileIsNotTakenForLeafPortals)

@@ -217,7 +217,7 @@ TEST(PrtFile, EmptyOrWrongMagicIsRefused)
     EXPECT_PRT_ERROR("PRT1-AM\n2\n1\n3\n", "portal 0 of 1 is missing");
     EXPECT_PRT_ERROR("PRT3\n3\n1\n", "unknown portal file version 'PRT3'");
     EXPECT_PRT_ERROR(std::string("\x1d\x00\x00\x00\xff\xfe", 6), "binary data");
-    EXPECT_PRT_ERROR("prt1\n3\n1\n", "expected the PRT1 header, found 'prt1'");
+    EXPECT_PRT_ERROR("prt1\n3\n1\n", "expected a PRT1, PRT2 or PRT1-AM header, found 'prt1'");
 }
 
 TEST(PrtFile, TruncatedHeaderAndPortalsAreRefused)

@@ -359,6 +359,18 @@ bool edge_separator(const WRef& a, const WRef& b, const int8_t* b_side, uint32_t
     return false;
 }
 
+// ericw's ClipToSeparators, less the clipping: use(plane) gets the separator of each edge of A
+// with B in turn (a_plane: A's plane; b_side: scratch for B's points), while it returns true.
+template <class Use>
+void for_each_separator(const WRef& a, const DPlane& a_plane, const WRef& b, bool mirror, int8_t* b_side, Use&& use)
+{
+    sides_to_plane(b, a_plane, b_side);
+    DPlane sep;
+    for (uint32_t i = 0; i < a.count; ++i)
+        if (edge_separator(a, b, b_side, i, mirror, sep) && !use(sep))
+            return;
+}
+
 // Passages (portal_vis.h, "Passages"): for directed portal a and the k-th portal b leaving a's
 // destination, the leaves a line through a and then b can reach. A row keeps only its words
 // [lo, hi) (the others are zero): such a line reaches a few nearby leaves, and BSP leaf numbers
@@ -556,20 +568,14 @@ void FlowWorker::passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t
     const WRef aw = portal_winding(ai);
     std::vector<DPlane>& planes = passage_planes_;
     planes.clear();
-    if (level_ > 0) {
-        sides_to_plane(bw, a.plane, b_side_.data());
-        DPlane sep;
-        for (uint32_t i = 0; i < aw.count; ++i)
-            if (edge_separator(aw, bw, b_side_.data(), i, false, sep))
-                planes.push_back(sep);
-    }
-    if (level_ > 1) {
-        sides_to_plane(aw, b.plane, b_side_.data());
-        DPlane sep;
-        for (uint32_t i = 0; i < bw.count; ++i)
-            if (edge_separator(bw, aw, b_side_.data(), i, true, sep))
-                planes.push_back(sep);
-    }
+    const auto keep = [&](const DPlane& sep) {
+        planes.push_back(sep);
+        return true;
+    };
+    if (level_ > 0) // test 0: a -> b
+        for_each_separator(aw, a.plane, bw, false, b_side_.data(), keep);
+    if (level_ > 1) // test 1: b -> a, mirrored
+        for_each_separator(bw, b.plane, aw, true, b_side_.data(), keep);
     const uint64_t* ma = &mightsee[size_t(ai) * words];
     const uint64_t* mb = &mightsee[size_t(bi) * words];
     // Flood from b's leaf through the portals a line through a and b can cross.
@@ -803,8 +809,7 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
         Frame& f = *frames_[depth_];
         const Frame& prev = *frames_[depth_ - 1];
         if (f.cursor == f.end) {
-            on_stack_[f.leaf] = 0;
-            --depth_;
+            leave();
             continue;
         }
         if (++steps == kCancelCheckSteps) {
@@ -883,19 +888,14 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
         if (!pass)
             continue;
         // Test 2: target -> pass separators clip the source. Test 3: pass -> target, mirrored.
-        DPlane sep;
-        if (level_ > 2) {
-            sides_to_plane(prev.pass, q.plane, b_side_.data());
-            for (uint32_t i = 0; i < pass.count && source; ++i)
-                if (edge_separator(pass, prev.pass, b_side_.data(), i, false, sep))
-                    source = clip(source, sep, f);
-        }
-        if (level_ > 3 && source) {
-            sides_to_plane(pass, prev.portalplane, b_side_.data());
-            for (uint32_t i = 0; i < prev.pass.count && source; ++i)
-                if (edge_separator(prev.pass, pass, b_side_.data(), i, true, sep))
-                    source = clip(source, sep, f);
-        }
+        const auto clip_source = [&](const DPlane& sep) {
+            source = clip(source, sep, f);
+            return bool(source);
+        };
+        if (level_ > 2)
+            for_each_separator(pass, q.plane, prev.pass, false, b_side_.data(), clip_source);
+        if (level_ > 3 && source)
+            for_each_separator(prev.pass, prev.portalplane, pass, true, b_side_.data(), clip_source);
         if (!source)
             continue;
 
@@ -908,8 +908,8 @@ bool FlowWorker::run(uint32_t pi, const uint64_t* head_mightsee, PruneRow&& prun
             leave(); // nothing below could add a leaf
     }
     if (cancelled) {
-        for (; depth_ > 0; --depth_)
-            on_stack_[frames_[depth_]->leaf] = 0;
+        while (depth_ > 0)
+            leave();
         return false;
     }
     return true;

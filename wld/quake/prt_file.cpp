@@ -86,18 +86,24 @@ public:
         PrtFile prt;
         prt.version = read_magic();
         int64_t leaf_count = 0, cluster_count = 0, portal_count = 0;
+        size_t cluster_count_at = 0;
         if (prt.version == PrtVersion::Prt1) {
             leaf_count = read_count("leaf count");
             portal_count = read_count("portal count");
         } else if (prt.version == PrtVersion::Prt2) {
             leaf_count = read_count("leaf count");
-            cluster_count = read_count("cluster count");
+            cluster_count = read_count("cluster count", &cluster_count_at);
             portal_count = read_count("portal count");
         } else {
-            cluster_count = read_count("cluster count");
+            cluster_count = read_count("cluster count", &cluster_count_at);
             portal_count = read_count("portal count");
             leaf_count = read_count("leaf count");
         }
+        // A cluster holds at least one leaf. More clusters than leaves would only make a bake
+        // over them cost cluster_count^2 bits for nothing.
+        if (cluster_count > leaf_count)
+            fail(cluster_count_at, "the header declares " + std::to_string(cluster_count) + " clusters for " +
+                                       std::to_string(leaf_count) + " leaves; a cluster holds at least one leaf");
         prt.leaf_count = static_cast<uint32_t>(leaf_count);
         prt.cluster_count = static_cast<uint32_t>(cluster_count);
 
@@ -122,7 +128,8 @@ public:
                                  (prt.has_clusters() ? "the cluster map" : std::to_string(portal_count) + " portals") +
                                  "; only whitespace may follow";
             if (!prt.has_clusters() && parse_integer(token, ignored) == NumberStatus::Ok)
-                reason += " (a Quake 3 portal file has a face count and face lines here; only PRT1 is supported)";
+                reason += " (a Quake 3 portal file has a face count and face lines here; only Quake 1's PRT1, PRT2 "
+                          "and PRT1-AM are supported)";
             fail(start, reason);
         }
         return prt;
@@ -165,7 +172,7 @@ private:
     {
         skip_space();
         if (pos_ == text_.size())
-            fail(pos_, "empty file: expected the PRT1 header");
+            fail(pos_, "empty file: expected a PRT1, PRT2 or PRT1-AM header");
         const size_t start = pos_;
         while (pos_ < text_.size() && !is_space(text_[pos_]))
             ++pos_;
@@ -177,10 +184,10 @@ private:
         if (magic == "PRT1-AM")
             return PrtVersion::Prt1Am;
         if (is_binary(magic))
-            fail(start, "not a portal file: expected the PRT1 header, found binary data " + quoted(magic));
+            fail(start, "not a portal file: expected a PRT1, PRT2 or PRT1-AM header, found binary data " + quoted(magic));
         if (magic.starts_with("PRT"))
             fail(start, "unknown portal file version " + quoted(magic) + "; PRT1, PRT2 and PRT1-AM are supported");
-        fail(start, "not a portal file: expected the PRT1 header, found " + quoted(magic));
+        fail(start, "not a portal file: expected a PRT1, PRT2 or PRT1-AM header, found " + quoted(magic));
     }
 
     // PRT2: line c lists the leaves of cluster c, ending with -1. Every leaf exactly once.
@@ -233,10 +240,13 @@ private:
         }
     }
 
-    int64_t read_count(const char* what)
+    // A header count; `at`, when given, gets the token's offset.
+    int64_t read_count(const char* what, size_t* at = nullptr)
     {
         skip_space();
         const size_t start = pos_;
+        if (at != nullptr)
+            *at = start;
         const std::string_view token = any_token();
         if (token.empty())
             fail(start, std::string("file ends early: expected the ") + what);
@@ -293,7 +303,7 @@ private:
             std::string reason = where + ": expected '(' to start its first point, found " + quoted(token);
             if (parse_integer(token, ignored) == NumberStatus::Ok)
                 reason += " (a Quake 3 portal file has a hint flag here or a face count in the header; "
-                          "only PRT1 is supported)";
+                          "only Quake 1's PRT1, PRT2 and PRT1-AM are supported)";
             fail(start, reason);
         }
 
