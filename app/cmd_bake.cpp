@@ -108,7 +108,7 @@ Input load_input(const std::string& path)
 
 // --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
 // the zone's regions. A PRT2 / PRT1-AM file's portals name its clusters.
-quake::PrtFile portals_from_file(const std::string& prt_path, const Zone& zone, const std::string& zone_path)
+quake::PrtFile load_prt_for_zone(const std::string& prt_path, const Zone& zone, const std::string& zone_path)
 {
     quake::PrtFile prt = quake::load_prt(prt_path);
     if (prt.leaf_count != zone.region_count())
@@ -159,8 +159,10 @@ struct BakeRun {
     std::string portal_source = "tree";
     std::optional<PortalStats> portal_stats;
     double portal_seconds = 0.0;
-    std::optional<RegionClusters> clusters; // set when the bake runs over clusters
-    bool portals_name_clusters = false;     // from a PRT2 / PRT1-AM file: portals are between clusters
+    // Set when the bake runs over clusters (a PRT2 / PRT1-AM file's, or box clusters); `portals`
+    // are then the portals between clusters.
+    std::optional<RegionClusters> clusters;
+    size_t portals_inside_clusters = 0; // box clusters: region portals dropped inside one cluster
     Pvs pvs;
     VisReport report;
     ClusterReport cluster_report;
@@ -239,12 +241,11 @@ void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FIL
 {
     const auto start = std::chrono::steady_clock::now();
     if (!o.prt_in.empty()) {
-        quake::PrtFile prt = portals_from_file(o.prt_in, zone, o.input);
+        quake::PrtFile prt = load_prt_for_zone(o.prt_in, zone, o.input);
         run.portals = std::move(prt.portals);
         run.portal_source = o.prt_in;
         if (prt.has_clusters()) {
             run.clusters = RegionClusters{std::move(prt.cluster_of_leaf), prt.cluster_count};
-            run.portals_name_clusters = true;
             std::fprintf(err, "clusters: %s groups %zu leaves in %u clusters\n", o.prt_in.c_str(), zone.region_count(),
                          run.clusters->cluster_count);
         }
@@ -269,7 +270,7 @@ void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FIL
 // --clusters auto: box clusters for a zone whose regions are boxes, none for a Quake map.
 void choose_clusters(const BakeOptions& o, const Input& in, BakeRun& run, std::FILE* err)
 {
-    if (o.clusters != "auto" || run.portals_name_clusters) // a PRT2 file's own clusters are used
+    if (o.clusters != "auto" || run.clusters) // a PRT2 file's own clusters are used
         return;
     if (in.format == InputFormat::QuakeBsp) {
         std::fprintf(err, "note: --clusters auto: a Quake map is baked per leaf (its PVS is per leaf)\n");
@@ -280,6 +281,8 @@ void choose_clusters(const BakeOptions& o, const Input& in, BakeRun& run, std::F
         return;
     }
     run.clusters = box_merge_clusters(in.zone.regions, run.portals);
+    run.portals = cluster_portal_set(run.portals, run.clusters->cluster_of_region, run.clusters->cluster_count,
+                                     &run.portals_inside_clusters);
     std::fprintf(err, "clusters: %zu regions in %u box clusters\n", in.zone.region_count(), run.clusters->cluster_count);
 }
 
@@ -297,13 +300,11 @@ bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, 
         bar.update(fraction);
         return !(cancel && cancel->load());
     };
-    if (run.portals_name_clusters)
+    if (run.clusters) {
         run.pvs = bake_cluster_portal_vis(run.portals, run.clusters->cluster_of_region, run.clusters->cluster_count,
                                           params, &run.report, &run.cluster_report);
-    else if (run.clusters)
-        run.pvs = bake_clustered_portal_vis(run.portals, run.clusters->cluster_of_region, run.clusters->cluster_count,
-                                            params, &run.report, &run.cluster_report);
-    else
+        run.cluster_report.portals_inside_clusters = run.portals_inside_clusters;
+    } else
         run.pvs = bake_portal_vis(run.portals, uint32_t(zone.region_count()), params, &run.report);
     bar.finish(run.report.cancelled ? "cancelled" : "done");
     return !run.report.cancelled;
@@ -315,15 +316,11 @@ void write_portal_file(const std::string& path, const Zone& zone, const BakeRun&
 {
     quake::PrtFile prt;
     prt.leaf_count = uint32_t(zone.region_count());
-    if (!run.clusters) {
-        prt.portals = run.portals;
-    } else {
+    prt.portals = run.portals;
+    if (run.clusters) {
         prt.version = quake::PrtVersion::Prt2;
         prt.cluster_count = run.clusters->cluster_count;
         prt.cluster_of_leaf = run.clusters->cluster_of_region;
-        prt.portals = run.portals_name_clusters
-                          ? run.portals
-                          : cluster_portal_set(run.portals, run.clusters->cluster_of_region, prt.cluster_count);
     }
     quake::save_prt(path, prt);
     std::fprintf(err, "wrote %s: %s, %zu portals\n", path.c_str(), run.clusters ? "PRT2" : "PRT1",

@@ -1,11 +1,11 @@
 // `pvscope bake FILE --method portal-fast|portal-full [--level L] [--threads N] [--sky MODE]
-//  [--clusters none|auto] [--prt IN.prt] [--write-prt OUT.prt] [--report REPORT.json] -o OUT`:
-// compute a PVS with the
-// portal-vis baker (visibility/portal/portal_vis.h) and write the zone back in its own format.
+//  [--clusters none|auto] [--passages B] [--target-checks B] [--prt IN.prt] [--write-prt OUT.prt]
+//  [--report REPORT.json] -o OUT`: compute a PVS with the portal-vis baker
+// (visibility/portal/portal_vis.h) and write the zone back in its own format.
 //
 //  - Input: a Quake BSP 29 or an EverQuest .s3d, recognised from the bytes. Portals come from
-//    --prt (PRT1, whose leaf k must be region k: the file must name exactly the zone's region
-//    count) or else are built from the zone's BSP tree (build_zone_portals). A sibling .prt
+//    --prt (PRT1, PRT2 or PRT1-AM, whose leaf k must be region k: the file must name exactly the
+//    zone's region count) or else are built from the zone's BSP tree (build_zone_portals). A sibling .prt
 //    next to a .bsp is NOT used unless named with --prt, so the source is always explicit.
 //  - Output: the input's format only. A .bsp gets a new VISIBILITY lump and leaf visofs, all
 //    other lumps byte-identical (wld/quake/bsp29_vis_writer.h); an .s3d is re-written with the
@@ -44,8 +44,8 @@ struct BakeOptions {
     std::string clusters = "none";      // none | auto (see above)
     bool passages = true;               // portal-full: prune the flow with passages (VisParams)
     bool target_checks = true;          // portal-full: target checks before re-entering a seen leaf (VisParams)
-    std::string prt_in;                 // portals from this PRT1 file instead of the tree
-    std::string prt_out;                // also write the portals used as PRT1
+    std::string prt_in;                 // portals from this PRT1/PRT2/PRT1-AM file instead of the tree
+    std::string prt_out;                // also write the portals used (PRT1, or PRT2 over clusters)
     std::string report;                 // JSON report path, "-" for stdout
 };
 

@@ -2,26 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace pvs {
 namespace {
 
 double box_volume(const Aabb& box)
 {
-    const glm::vec3 size = glm::max(box.max - box.min, glm::vec3(0.0f));
+    const glm::vec3 size = glm::max(box.size(), glm::vec3(0.0f));
     return double(size.x) * double(size.y) * double(size.z);
 }
-
-Aabb box_union(const Aabb& a, const Aabb& b) { return Aabb{glm::min(a.min, b.min), glm::max(a.max, b.max)}; }
 
 class BoxMerger {
 public:
     BoxMerger(const std::vector<Region>& regions, const BoxClusterOptions& options)
-        : options_(options), parent_(regions.size()), box_(regions.size()), volume_(regions.size()),
+        : options_(options), union_(regions.size()), box_(regions.size()), volume_(regions.size()),
           members_(regions.size(), 1)
     {
-        std::iota(parent_.begin(), parent_.end(), 0u);
         for (size_t r = 0; r < regions.size(); ++r) {
             box_[r] = regions[r].bounds;
             volume_[r] = box_volume(regions[r].bounds);
@@ -34,27 +30,14 @@ public:
         bool merged = false;
         for (const Portal& portal : portals.portals) {
             const int32_t a = portal.regions[0], b = portal.regions[1];
-            if (a < 0 || b < 0 || size_t(a) >= parent_.size() || size_t(b) >= parent_.size())
+            if (a < 0 || b < 0 || size_t(a) >= union_.size() || size_t(b) >= union_.size())
                 continue;
-            merged = try_merge(find(uint32_t(a)), find(uint32_t(b))) || merged;
+            merged = try_merge(union_.find(uint32_t(a)), union_.find(uint32_t(b))) || merged;
         }
         return merged;
     }
 
-    RegionClusters number()
-    {
-        constexpr uint32_t kNone = ~0u;
-        RegionClusters out;
-        out.cluster_of_region.resize(parent_.size());
-        std::vector<uint32_t> id_of_root(parent_.size(), kNone);
-        for (uint32_t r = 0; r < parent_.size(); ++r) {
-            const uint32_t root = find(r);
-            if (id_of_root[root] == kNone)
-                id_of_root[root] = out.cluster_count++;
-            out.cluster_of_region[r] = id_of_root[root];
-        }
-        return out;
-    }
+    RegionClusters clusters() { return union_.clusters(); }
 
 private:
     bool try_merge(uint32_t a, uint32_t b)
@@ -63,33 +46,24 @@ private:
             return false;
         if (options_.max_regions != 0 && members_[a] + members_[b] > options_.max_regions)
             return false;
-        const Aabb u = box_union(box_[a], box_[b]);
-        const glm::vec3 extent = u.max - u.min;
+        Aabb u = box_[a];
+        u.grow(box_[b]);
+        const glm::vec3 extent = u.size();
         if (options_.max_extent > 0.0f &&
             (extent.x > options_.max_extent || extent.y > options_.max_extent || extent.z > options_.max_extent))
             return false;
         const double filled = volume_[a] + volume_[b];
         if (filled < double(options_.min_fill) * box_volume(u) * (1.0 - 1e-4))
             return false;
-        const uint32_t root = std::min(a, b), child = std::max(a, b); // the lower id is the root
-        parent_[child] = root;
+        const uint32_t root = union_.join_roots(a, b), child = root == a ? b : a;
         box_[root] = u;
         volume_[root] = filled;
         members_[root] += members_[child];
         return true;
     }
 
-    uint32_t find(uint32_t r)
-    {
-        while (parent_[r] != r) {
-            parent_[r] = parent_[parent_[r]];
-            r = parent_[r];
-        }
-        return r;
-    }
-
     BoxClusterOptions options_;
-    std::vector<uint32_t> parent_;
+    RegionUnion union_;
     std::vector<Aabb> box_;
     std::vector<double> volume_;
     std::vector<uint32_t> members_;
@@ -155,7 +129,7 @@ RegionClusters box_merge_clusters(const std::vector<Region>& regions, const Port
     BoxMerger merger(regions, options);
     for (int pass = 0; pass < 64 && merger.pass(portals); ++pass) {
     }
-    return merger.number();
+    return merger.clusters();
 }
 
 } // namespace pvs

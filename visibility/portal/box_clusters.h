@@ -25,7 +25,7 @@
 // at most 64 passes are made: later merges are left undone, which is allowed).
 #pragma once
 
-#include "visibility/portal/region_clusters.h"
+#include "visibility/portal/region_union.h"
 #include "visibility/zone.h"
 
 #include <cstdint>

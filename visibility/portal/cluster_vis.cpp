@@ -86,7 +86,7 @@ ClusterMasks cluster_masks(std::span<const uint32_t> cluster_of_region, uint32_t
         for (uint32_t i = start[c]; i < start[c + 1]; ++i) {
             const uint32_t word = members[i] >> 6;
             const uint64_t bit = uint64_t{1} << (members[i] & 63);
-            if (!masks.word.empty() && masks.first.back() < masks.word.size() && masks.word.back() == word)
+            if (masks.first.back() < masks.word.size() && masks.word.back() == word) // this cluster's last word
                 masks.mask.back() |= bit;
             else {
                 masks.word.push_back(word);
@@ -139,6 +139,7 @@ Pvs bake_cluster_portal_vis(const PortalSet& cluster_portals, std::span<const ui
     std::vector<uint64_t> cluster_row(clusters.words_per_row());
     std::vector<uint64_t> expanded(bits::words_for(region_count));
     int64_t expanded_cluster = -1; // the cluster whose region row `expanded` holds
+    size_t expanded_count = 0;     // and its bits
     size_t visible_total = 0;
     Pvs result = Pvs::build(region_count, [&](uint32_t region, std::span<uint64_t> row) {
         const uint32_t cluster = cluster_of_region[region];
@@ -146,9 +147,10 @@ Pvs bake_cluster_portal_vis(const PortalSet& cluster_portals, std::span<const ui
             std::fill(expanded.begin(), expanded.end(), 0);
             expand_row(clusters, masks, cluster, cluster_row, expanded);
             expanded_cluster = cluster;
+            expanded_count = bits::count(expanded);
         }
         std::copy(expanded.begin(), expanded.end(), row.begin());
-        visible_total += bits::count(expanded);
+        visible_total += expanded_count;
         return true;
     });
     const auto end = std::chrono::steady_clock::now();
@@ -157,7 +159,8 @@ Pvs bake_cluster_portal_vis(const PortalSet& cluster_portals, std::span<const ui
         *report = vis;
         report->seconds = std::chrono::duration<double>(end - start).count();
         report->mean_visible = region_count ? double(visible_total) / double(region_count) : 0.0;
-        const size_t expand_bytes = masks.word.size() * 12 + masks.first.size() * 4 + result.memory_bytes() +
+        const size_t expand_bytes = masks.word.size() * (sizeof(uint32_t) + sizeof(uint64_t)) +
+                                    masks.first.size() * sizeof(uint32_t) + result.memory_bytes() +
                                     clusters.memory_bytes();
         report->peak_bytes_estimate = std::max(vis.peak_bytes_estimate, expand_bytes);
     }

@@ -3,7 +3,8 @@
 // them, bake_portal_vis (portal_vis.h) runs at cluster level, and the cluster rows are expanded
 // back to regions: region r sees region s exactly when cluster(r) sees cluster(s). This is what
 // ericw-tools' vis does with detail clusters (PRT2); here the grouping is any map a caller gives
-// (region_clusters.h forms them from a zone).
+// (box_clusters.h forms them for zones whose regions are boxes; RegionClusters is in
+// region_union.h).
 //
 // Why the result is conservative for ANY grouping (every region pair the leaf-level flow finds
 // visible, and every pair a real sight line joins, is visible here):

@@ -1,7 +1,6 @@
 #include "visibility/portal/region_clusters.h"
 
 #include <algorithm>
-#include <numeric>
 #include <utility>
 
 namespace pvs {
@@ -17,9 +16,8 @@ struct SubtreeSummary {
 class ClusterBuilder {
 public:
     ClusterBuilder(const BspTree& tree, const std::vector<Region>& regions, const ClusterOptions& options)
-        : tree_(tree), regions_(regions), options_(options), parent_(regions.size())
+        : tree_(tree), regions_(regions), options_(options), union_(regions.size())
     {
-        std::iota(parent_.begin(), parent_.end(), 0u);
     }
 
     RegionClusters run()
@@ -28,7 +26,7 @@ public:
             summarise();
             group();
         }
-        return number();
+        return union_.clusters();
     }
 
 private:
@@ -140,7 +138,7 @@ private:
                 if (first < 0)
                     first = region;
                 else
-                    unite(uint32_t(first), uint32_t(region));
+                    union_.unite(uint32_t(first), uint32_t(region));
                 continue;
             }
             if (seen[size_t(child)])
@@ -151,42 +149,10 @@ private:
         }
     }
 
-    uint32_t find(uint32_t r)
-    {
-        while (parent_[r] != r) {
-            parent_[r] = parent_[parent_[r]];
-            r = parent_[r];
-        }
-        return r;
-    }
-    void unite(uint32_t a, uint32_t b)
-    {
-        a = find(a);
-        b = find(b);
-        if (a != b)
-            parent_[std::max(a, b)] = std::min(a, b); // the lower id is the root
-    }
-
-    // Clusters in order of their lowest region id.
-    RegionClusters number()
-    {
-        constexpr uint32_t kNone = ~0u;
-        RegionClusters out;
-        out.cluster_of_region.assign(regions_.size(), kNone);
-        std::vector<uint32_t> id_of_root(regions_.size(), kNone);
-        for (uint32_t r = 0; r < regions_.size(); ++r) {
-            const uint32_t root = find(r);
-            if (id_of_root[root] == kNone)
-                id_of_root[root] = out.cluster_count++;
-            out.cluster_of_region[r] = id_of_root[root];
-        }
-        return out;
-    }
-
     const BspTree& tree_;
     const std::vector<Region>& regions_;
     ClusterOptions options_;
-    std::vector<uint32_t> parent_; // union-find over regions
+    RegionUnion union_;
     std::vector<SubtreeSummary> node_summary_;
 };
 
@@ -196,11 +162,6 @@ RegionClusters bsp_subtree_clusters(const BspTree& tree, const std::vector<Regio
                                     const ClusterOptions& options)
 {
     return ClusterBuilder(tree, regions, options).run();
-}
-
-RegionClusters zone_clusters(const Zone& zone, const ClusterOptions& options)
-{
-    return bsp_subtree_clusters(zone.tree, zone.regions, options);
 }
 
 } // namespace pvs

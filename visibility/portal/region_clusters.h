@@ -26,6 +26,7 @@
 // ignored), so bad trees cannot hang it.
 #pragma once
 
+#include "visibility/portal/region_union.h"
 #include "visibility/zone.h"
 
 #include <cstdint>
@@ -41,16 +42,8 @@ struct ClusterOptions {
     bool allow_walls = false;
 };
 
-struct RegionClusters {
-    std::vector<uint32_t> cluster_of_region; // one per zone region, in [0, cluster_count)
-    uint32_t cluster_count = 0;
-};
-
 // Clusters of tree's regions (region ids index `regions`, flags decide the medium), as above.
 RegionClusters bsp_subtree_clusters(const BspTree& tree, const std::vector<Region>& regions,
                                     const ClusterOptions& options = {});
-
-// bsp_subtree_clusters(zone.tree, zone.regions, options).
-RegionClusters zone_clusters(const Zone& zone, const ClusterOptions& options = {});
 
 } // namespace pvs
