@@ -14,6 +14,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace pvs::eq {
 namespace {
@@ -127,6 +128,52 @@ TEST(WldBodyReader, FragmentReferences)
     (void)typed.read<int32_t>("name_ref");
     expect_reason([&] { (void)typed.fragment_refs(1, "frame", kWldSprite); }, "refs.wld", body + 4,
                   label + "frame 0 1 names fragment 1 (0x03 bitmap name), not a 0x05 sprite");
+}
+
+TEST(WldBodyReader, HostileCountsFailBeforeAnythingIsReserved)
+{
+    const SpecFile f = one_fragment_file(Builder().i32(0).u32(0).out); // 8 bytes of body
+    const WldFile wld = parse_wld(f.file, "counts.wld");
+    const uint64_t body = f.body_at[0];
+    const std::string label = "fragment 1 (0x03 bitmap name): ";
+
+    // 2^32 - 1 elements would reserve 48 GiB of vec3 or 16 GiB of refs: a FileError naming the
+    // field, never bad_alloc.
+    WldBodyReader vecs(wld, 1, kWldBitmapName);
+    (void)vecs.read<int32_t>("name_ref");
+    expect_reason([&] { (void)vecs.vec3s(0xFFFFFFFFu, "region vertex"); }, "counts.wld", body + 4,
+                  label + "region vertex 4294967295 does not fit in the fragment (4 bytes left, at least 12 per "
+                          "element)");
+    WldBodyReader refs(wld, 1, kWldBitmapName);
+    (void)refs.read<int32_t>("name_ref");
+    expect_reason([&] { (void)refs.fragment_refs(0xFFFFFFFFu, "material reference", kWldMaterial); },
+                  "counts.wld", body + 4,
+                  label + "material reference 4294967295 does not fit in the fragment (4 bytes left, at least 4 "
+                          "per element)");
+    EXPECT_EQ(refs.fragment_refs(1, "material reference", kWldAnyFragmentType), (std::vector<int32_t>{0}));
+
+    // 2^62 elements of 8 bytes: the product 2^65 wraps to 0 in 64 bits, so only a division
+    // refuses it.
+    WldBodyReader wide(wld, 1, kWldBitmapName);
+    expect_reason([&] { wide.check_count(uint64_t{1} << 62, body, 8, "huge"); }, "counts.wld", body,
+                  label + "huge 4611686018427387904 does not fit in the fragment (8 bytes left, at least 8 per "
+                          "element)");
+}
+
+TEST(WldBodyReader, RefusesABodyBeforeItsHeaderCouldFit)
+{
+    // A hand-made WldFile whose fragment body starts inside the first 8 bytes: the type field
+    // (4 bytes before the body) would sit before the file, so the offset check comes first.
+    const SpecFile f = one_fragment_file(Builder().i32(0).u32(0).out);
+    const WldFile wld = parse_wld(f.file, "early.wld");
+    for (const uint64_t offset : {uint64_t{0}, uint64_t{4}, uint64_t{7}}) {
+        WldFile early = wld;
+        early.fragments[0].body_offset = offset;
+        const std::string reason = "fragment 1 (0x03 bitmap name): fragment body starts at " + std::to_string(offset) +
+                                   ", before its 8-byte header could fit";
+        expect_reason([&] { (void)parse_bitmap_name(early, 1); }, "early.wld", offset, reason);
+        expect_reason([&] { (void)parse_mesh(early, 1); }, "early.wld", offset, reason); // wrong type too
+    }
 }
 
 TEST(WldBodyReader, RefusesAMissingFragmentTheWrongTypeAndABodyOutsideTheBytes)

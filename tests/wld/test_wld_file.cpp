@@ -659,6 +659,31 @@ TEST(WldBadInput, VisListPastTheFragment)
                  {"fragment 4 (0x22 region)", "vis list 1 runs past the end of the fragment"});
 }
 
+TEST(WldBadInput, WallFieldsNameTheirWall)
+{
+    // Region A's body cut (on a hand-made WldFile) just before wall 0's uv origin and just
+    // before its normal: the message names wall 0, and the offset is the field's.
+    const HandMade& h = hand_made();
+    const WldFile wld = parse_wld(h.file, "cut.wld");
+    const uint64_t sprite = h.at.at("A.wall0.sprite");
+    const uint64_t uv_origin = sprite + 4;              // after the sprite reference
+    const uint64_t normal = uv_origin + 36 + 4 + 3 * 8; // after uv info, uv map count, 3 uv pairs
+    for (const auto& [field_at, phrase] : {std::pair{uv_origin, "wall uv origin 0 runs past the end"},
+                                           std::pair{normal, "wall normal 0 runs past the end"}}) {
+        WldFile cut = wld;
+        cut.fragments[2].body_size = static_cast<uint32_t>(field_at - h.body_at[2]);
+        try {
+            (void)parse_region(cut, 3);
+            ADD_FAILURE() << "no FileError; expected: " << phrase;
+        } catch (const FileError& e) {
+            EXPECT_EQ(e.file(), "cut.wld");
+            EXPECT_EQ(e.offset(), field_at) << e.what();
+            EXPECT_NE(e.reason().find("fragment 3 (0x22 region)"), std::string::npos) << e.reason();
+            EXPECT_NE(e.reason().find(phrase), std::string::npos) << e.reason();
+        }
+    }
+}
+
 TEST(WldBadInput, CountsThatOverflow)
 {
     const HandMade& h = hand_made();

@@ -3,6 +3,7 @@
 #include "visibility/file_error.h"
 #include "wld/eq/wld_string_hash.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace pvs::eq {
@@ -38,22 +39,24 @@ std::string wld_fragment_label(uint32_t number, uint32_t type)
 // ---- WldBodyReader ----
 
 WldBodyReader::WldBodyReader(const WldFile& wld, uint32_t number, uint32_t expected_type)
-    : wld_(wld), number_(number), type_(expected_type)
+    : wld_(wld), number_(number)
 {
-    if (number == 0 || number > wld.fragments.size())
-        throw std::out_of_range("WLD fragment " + std::to_string(number) + " does not exist (the file has " +
-                                std::to_string(wld.fragments.size()) + ")");
-    const WldFragment& f = wld.fragments[number - 1];
+    const WldFragment& f = wld.fragment(number); // std::out_of_range outside the file
     type_ = f.type; // errors name the type the fragment has
     body_offset_ = f.body_offset;
     body_size_ = f.body_size;
-    if (f.type != expected_type)
-        fail(f.body_offset - kWldFragmentHeaderSize + 4, "expected a " + wld_type_label(expected_type) + " fragment");
+    // Bounds first: a hand-made WldFragment may put its body before the 8-byte header could fit,
+    // and the type field's offset below is computed from it.
     const uint64_t size = wld.bytes.size();
+    if (f.body_offset < kWldFragmentHeaderSize)
+        fail(f.body_offset, "fragment body starts at " + std::to_string(f.body_offset) + ", before its " +
+                                std::to_string(kWldFragmentHeaderSize) + "-byte header could fit");
     if (f.body_offset > size || f.body_size > size - f.body_offset)
         fail(f.body_offset, "fragment body runs past the end of the data (" + std::to_string(f.body_size) +
                                 " bytes needed, " + std::to_string(f.body_offset > size ? 0 : size - f.body_offset) +
                                 " available)");
+    if (f.type != expected_type)
+        fail(f.body_offset - kWldFragmentHeaderSize + 4, "expected a " + wld_type_label(expected_type) + " fragment");
 }
 
 void WldBodyReader::fail(uint64_t offset, const std::string& reason) const
@@ -91,8 +94,8 @@ glm::vec4 WldBodyReader::vec4(const char* what, int64_t index)
 void WldBodyReader::check_count(uint64_t count, uint64_t count_at, uint64_t min_bytes, const char* what,
                                 int64_t index) const
 {
-    // count < 2^33 and min_bytes < 2^8 at every caller: the product cannot overflow.
-    if (count * min_bytes > left())
+    // Divided, not multiplied: count * min_bytes could overflow for a hostile count.
+    if (count > left() / std::max<uint64_t>(min_bytes, 1))
         fail(count_at, indexed(what, index) + " " + std::to_string(count) + " does not fit in the fragment (" +
                            std::to_string(left()) + " bytes left, at least " + std::to_string(min_bytes) +
                            " per element)");
@@ -117,10 +120,11 @@ std::vector<uint32_t> WldBodyReader::u32s(uint32_t count, const char* what, int6
 
 std::vector<glm::vec3> WldBodyReader::vec3s(uint32_t count, const char* what)
 {
+    check_count(count, at(), 12, what); // before reserving: a hostile count must not allocate
     std::vector<glm::vec3> values;
     values.reserve(count);
     for (uint32_t i = 0; i < count; ++i)
-        values.push_back(vec3(what));
+        values.push_back(vec3(what, i));
     return values;
 }
 
@@ -146,6 +150,7 @@ int32_t WldBodyReader::fragment_ref(const char* what, uint32_t target_type, int6
 
 std::vector<int32_t> WldBodyReader::fragment_refs(uint32_t count, const char* what, uint32_t target_type)
 {
+    check_count(count, at(), 4, what); // before reserving: a hostile count must not allocate
     std::vector<int32_t> refs;
     refs.reserve(count);
     for (uint32_t i = 0; i < count; ++i)

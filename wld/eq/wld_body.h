@@ -6,8 +6,9 @@
 //
 // WldBodyReader reads fragment `number` front to back, starting at its name_ref (body offset 0).
 //  - The constructor throws std::out_of_range for a number outside the file, and FileError when
-//    the fragment is not of the expected type or its body lies outside the WLD bytes (parse_wld
-//    checks that; a hand-made WldFile may not have been).
+//    the fragment's body lies outside the WLD bytes or starts before its 8-byte header could
+//    fit (parse_wld checks that; a hand-made WldFile may not have been), or when it is not of
+//    the expected type.
 //  - No read leaves the body: a field that does not fit fails before anything is read.
 //  - Counts are checked against the bytes left before anyone reserves memory for them, so a
 //    count of 2^32 - 1 fails cleanly instead of allocating.
@@ -28,6 +29,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -45,6 +47,9 @@ std::string wld_hex(uint32_t value);
 std::string wld_type_label(uint32_t type);
 // "fragment 12 (0x36 mesh)": how every error inside a fragment starts.
 std::string wld_fragment_label(uint32_t number, uint32_t type);
+
+// True when no component is NaN or infinite: the check parsers make on positions and planes.
+inline bool all_finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // fragment_ref's target type for a reference that may name a fragment of any type.
 inline constexpr uint32_t kWldAnyFragmentType = 0;
@@ -85,21 +90,23 @@ public:
     glm::vec3 vec3(const char* what, int64_t index = -1);
     glm::vec4 vec4(const char* what, int64_t index = -1);
 
-    // Fails at `count_at` unless `count` elements of at least `min_bytes` each fit in what is
-    // left of the body. Call it before reserving anything for them.
+    // Fails at `count_at` unless `count` elements of at least `min_bytes` (>= 1; 0 counts as 1)
+    // each fit in what is left of the body. Call it before reserving anything for them.
     void check_count(uint64_t count, uint64_t count_at, uint64_t min_bytes, const char* what,
                      int64_t index = -1) const;
     // Reads a u32 count and check_count's it at its own offset.
     uint32_t count(const char* what, uint64_t min_bytes, int64_t index = -1);
 
-    // `count` values read back to back (the count already checked or not: each read is).
+    // `count` values read back to back; the count is checked against the bytes left before
+    // anything is reserved (at the first element's offset). vec3s names element i "`what` i".
     std::vector<uint32_t> u32s(uint32_t count, const char* what, int64_t index = -1);
     std::vector<glm::vec3> vec3s(uint32_t count, const char* what);
 
     // A fragment reference (§2.4): 0, an EARLIER fragment (of `target_type` unless that is
     // kWldAnyFragmentType), or a negative reference by name whose string exists.
     int32_t fragment_ref(const char* what, uint32_t target_type, int64_t index = -1);
-    // `count` references, the i-th named "`what` i" in errors.
+    // `count` references, the i-th named "`what` i" in errors; the count is checked first, as in
+    // vec3s.
     std::vector<int32_t> fragment_refs(uint32_t count, const char* what, uint32_t target_type);
 
 private:

@@ -16,8 +16,6 @@ namespace pvs::eq {
 
 namespace {
 
-bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // ---- 0x22 parts ----
 
 WldRenderInfo read_render_info(WldBodyReader& r, int64_t wall)
@@ -33,15 +31,15 @@ WldRenderInfo read_render_info(WldBodyReader& r, int64_t wall)
     if (info.flags & kWldRenderSprite)
         info.sprite_ref = r.fragment_ref("wall sprite reference", kWldAnyFragmentType, wall);
     if (info.flags & kWldRenderUvInfo) {
-        info.uv_origin = r.vec3("wall uv origin");
-        info.u_axis = r.vec3("wall u axis");
-        info.v_axis = r.vec3("wall v axis");
+        info.uv_origin = r.vec3("wall uv origin", wall);
+        info.u_axis = r.vec3("wall u axis", wall);
+        info.v_axis = r.vec3("wall v axis", wall);
     }
     if (info.flags & kWldRenderUvMap) {
         const uint32_t count = r.count("wall uv map count", 8, wall);
         info.uv_map.reserve(count);
         for (uint32_t i = 0; i < count; ++i)
-            info.uv_map.push_back(r.vec2("wall uv map"));
+            info.uv_map.push_back(r.vec2("wall uv map", wall));
     }
     return info;
 }
@@ -58,7 +56,7 @@ WldWall read_wall(WldBodyReader& r, int64_t index)
     if (wall.flags & kWldWallRenderData) {
         wall.render_method = r.read<uint32_t>("wall render method", index);
         wall.render_info = read_render_info(r, index);
-        wall.normal = r.vec4("wall normal");
+        wall.normal = r.vec4("wall normal", index);
     }
     return wall;
 }
@@ -83,7 +81,7 @@ WldObstacle read_obstacle(WldBodyReader& r, int64_t index, size_t wall_count)
         ob.vertices = r.u32s(n, "obstacle vertex list", index);
     }
     if (ob.type == kWldObstacleEdgePolygonNormal)
-        ob.normal = r.vec4("obstacle normal");
+        ob.normal = r.vec4("obstacle normal", index);
     if (ob.type == kWldObstacleEdgeWall) {
         const uint64_t wall_at = r.at();
         ob.edge_wall = r.read<uint32_t>("obstacle edge wall", index);
@@ -102,7 +100,7 @@ WldObstacle read_obstacle(WldBodyReader& r, int64_t index, size_t wall_count)
 WldVisNode read_vis_node(WldBodyReader& r, int64_t index, uint32_t node_count, uint32_t list_count)
 {
     WldVisNode node;
-    node.normal = r.vec4("vis node normal");
+    node.normal = r.vec4("vis node normal", index);
     const uint64_t fields_at = r.at();
     node.vis_list_index = r.read<uint32_t>("vis node list index", index);
     node.front = r.read<uint32_t>("vis node front", index);
@@ -251,8 +249,6 @@ const WldFragment& WldFile::fragment(uint32_t number) const
     return fragments[number - 1];
 }
 
-std::span<const uint8_t> WldFile::body(const WldFragment& f) const { return bytes.subspan(f.body_offset, f.body_size); }
-
 namespace {
 
 WldHeader read_header(const ByteReader& in)
@@ -366,9 +362,9 @@ WldBspTree parse_bsp_tree(const WldFile& wld, uint32_t number)
         WldBspNode& node = tree.nodes[i];
         const uint64_t at = r.at();
         const int64_t n = int64_t{i} + 1;
-        node.normal = r.vec3("node normal");
+        node.normal = r.vec3("node normal", n);
         node.d = r.read<float>("node d", n);
-        if (!finite(node.normal) || !std::isfinite(node.d))
+        if (!all_finite(node.normal) || !std::isfinite(node.d))
             r.fail(at, "node " + std::to_string(n) + " plane is not a finite number");
         const auto region = r.read<int32_t>("node region", n);
         const auto front = r.read<int32_t>("node front", n);

@@ -103,8 +103,6 @@ struct WldFile {
     uint32_t region_count() const { return static_cast<uint32_t>(region_fragments.size()); }
     // Fragment `number` (1-based); std::out_of_range for a number outside the file.
     const WldFragment& fragment(uint32_t number) const;
-    // The fragments' body bytes (name_ref first).
-    std::span<const uint8_t> body(const WldFragment& fragment) const;
 };
 
 // Parses the container: header, string hash, fragment table. `bytes` must outlive the result.

@@ -14,8 +14,6 @@ namespace pvs::eq {
 
 namespace {
 
-bool finite(glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // The nine u16 counts at body offset 0x4C, in file order.
 enum Count { kVertices, kUvs, kNormals, kColors, kFaces, kSkinGroups, kFaceGroups, kVertexGroups, kMeshOps };
 constexpr const char* kCountNames[9] = {"vertex_count",
@@ -103,7 +101,7 @@ WldMesh parse_mesh(const WldFile& wld, uint32_t fragment_number)
     m.fragment4 = r.read<int32_t>("fragment4");
     const uint64_t center_at = r.at();
     m.center = r.vec3("center");
-    if (!finite(m.center))
+    if (!all_finite(m.center))
         r.fail(center_at, "center is not a finite number");
     for (uint32_t& p : m.params2)
         p = r.read<uint32_t>("params2");
@@ -205,12 +203,12 @@ WldMesh parse_mesh(const WldFile& wld, uint32_t fragment_number)
 
 uint16_t mesh_scale_for(const WldMesh& mesh)
 {
-    if (!finite(mesh.center))
+    if (!all_finite(mesh.center))
         throw std::invalid_argument("0x36 mesh: the center is not finite");
     double largest = 0.0; // the largest |position - center| over every axis
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
         const glm::vec3 p = mesh.positions[i];
-        if (!finite(p))
+        if (!all_finite(p))
             throw std::invalid_argument("0x36 mesh: position " + std::to_string(i) + " is not finite");
         for (int k = 0; k < 3; ++k)
             largest = std::max(largest, std::abs(double{p[k]} - double{mesh.center[k]}));
