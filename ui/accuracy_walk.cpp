@@ -1,14 +1,15 @@
 #include "ui/accuracy_walk.h"
 
 #include "ui/software_renderer.h"
-#include "visibility/eval/ray_pick.h"
+#include "visibility/eval/sight_check.h"
 
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <chrono>
-#include <tuple>
+#include <memory>
 
 namespace pvs::ui {
 
@@ -25,88 +26,134 @@ std::vector<int32_t> face_ids_of(const Image& ids)
     return out;
 }
 
-// The ray from the camera through the centre of pixel (x, y), rows top to bottom.
-void pixel_ray(const Camera& camera, uint32_t x, uint32_t y, uint32_t width, uint32_t height, glm::vec3& origin,
-               glm::vec3& direction)
-{
-    const glm::mat4 inverse = glm::inverse(camera.view_projection());
-    const float nx = 2.0f * (float(x) + 0.5f) / float(width) - 1.0f;
-    const float ny = 1.0f - 2.0f * (float(y) + 0.5f) / float(height);
-    glm::vec4 near_point = inverse * glm::vec4(nx, ny, -1.0f, 1.0f);
-    glm::vec4 far_point = inverse * glm::vec4(nx, ny, 1.0f, 1.0f);
-    near_point /= near_point.w;
-    far_point /= far_point.w;
-    origin = camera.position;
-    direction = glm::normalize(glm::vec3(far_point) - glm::vec3(near_point));
-}
+// The sight lines of one camera's pixels, traced on first demand and kept for the other PVSs.
+class PixelSights {
+public:
+    PixelSights(const SightCheck& check, const Camera& camera, uint32_t width, uint32_t height)
+        : check_(check), camera_(camera), width_(width), height_(height),
+          inverse_(glm::inverse(glm::dmat4(camera.view_projection()))), cache_(size_t(width) * height)
+    {
+    }
+    const SightResult& at(uint32_t x, uint32_t y, uint32_t face)
+    {
+        Entry& entry = cache_[size_t(y) * width_ + x];
+        if (!entry.done) {
+            entry.result = check_.face_along_ray(glm::dvec3(camera_.position), pixel_direction(x, y), face, scratch_);
+            entry.done = true;
+        }
+        return entry.result;
+    }
 
-// Re-checks popping pixels with exact rays; returns (checked, confirmed).
-std::pair<uint64_t, uint64_t> confirm_popping(const Zone& zone, const FaceRegions& face_regions, const Camera& camera,
-                                              const Image& ids, const std::vector<uint8_t>& region_drawn,
-                                              const ImageAccuracy& accuracy, uint32_t max_rays)
+private:
+    // The unit direction from the camera through the centre of pixel (x, y), rows top to bottom.
+    glm::dvec3 pixel_direction(uint32_t x, uint32_t y) const
+    {
+        const double nx = 2.0 * (double(x) + 0.5) / double(width_) - 1.0;
+        const double ny = 1.0 - 2.0 * (double(y) + 0.5) / double(height_);
+        glm::dvec4 near_point = inverse_ * glm::dvec4(nx, ny, -1.0, 1.0);
+        glm::dvec4 far_point = inverse_ * glm::dvec4(nx, ny, 1.0, 1.0);
+        near_point /= near_point.w;
+        far_point /= far_point.w;
+        return glm::normalize(glm::dvec3(far_point) - glm::dvec3(near_point));
+    }
+
+    struct Entry {
+        SightResult result;
+        bool done = false;
+    };
+    const SightCheck& check_;
+    Camera camera_;
+    uint32_t width_, height_;
+    glm::dmat4 inverse_;
+    std::vector<Entry> cache_;
+    TreeTracer::Scratch scratch_;
+};
+
+// Splits the raster popping pixels into confirmed and cracks.
+void confirm_popping(const FaceRegions& face_regions, const Image& ids, const std::vector<uint8_t>& region_drawn,
+                     PixelSights& sights, WalkRow& row)
 {
-    if (accuracy.popping_pixels == 0 || max_rays == 0)
-        return {0, 0};
+    if (row.accuracy.popping_pixels == 0)
+        return;
     auto drawn = [&](uint32_t face) {
         for (uint32_t r : face_regions.of(face))
             if (region_drawn[r])
                 return true;
         return false;
     };
-    const uint64_t stride = std::max<uint64_t>(1, accuracy.popping_pixels / max_rays);
-    uint64_t seen = 0, checked = 0, confirmed = 0;
     for (uint32_t y = 0; y < ids.height; ++y)
         for (uint32_t x = 0; x < ids.width; ++x) {
             const uint32_t face = face_at(ids, x, y);
-            if (face == kNoFace || drawn(face) || seen++ % stride != 0 || checked == max_rays)
+            if (face == kNoFace || face >= face_regions.offsets.size() - 1 || drawn(face))
                 continue;
-            glm::vec3 origin, direction;
-            pixel_ray(camera, x, y, ids.width, ids.height, origin, direction);
-            const RayHit hit = first_face_hit(zone, origin, direction);
-            ++checked;
-            confirmed += hit.face >= 0 && !drawn(uint32_t(hit.face));
+            const SightResult& sight = sights.at(x, y, face);
+            if (sight.sight != Sight::Open) {
+                ++row.popping_cracks;
+                continue;
+            }
+            ++row.popping_confirmed;
+            if (sight.end_region >= 0)
+                row.confirmed_regions.push_back(uint32_t(sight.end_region));
         }
-    return {checked, confirmed};
+    std::sort(row.confirmed_regions.begin(), row.confirmed_regions.end());
+    row.confirmed_regions.erase(std::unique(row.confirmed_regions.begin(), row.confirmed_regions.end()),
+                                row.confirmed_regions.end());
 }
 
 } // namespace
 
-std::vector<WalkRow> run_accuracy_walk(const Zone& zone, const Pvs* pvs, std::span<const Camera> cameras,
-                                       const WalkOptions& options)
+std::vector<std::vector<WalkRow>> run_accuracy_walks(const Zone& zone, std::span<const Pvs* const> pvss,
+                                                     std::span<const Camera> cameras, const WalkOptions& options)
 {
     SoftwareRenderer renderer(options.width, options.height);
-    Culler culler(zone, pvs);
+    std::vector<std::unique_ptr<Culler>> cullers;
+    for (const Pvs* pvs : pvss)
+        cullers.push_back(std::make_unique<Culler>(zone, pvs));
     const FaceRegions face_regions = build_face_regions(zone);
+    const SightCheck sight_check(zone, options.sky);
     std::vector<uint32_t> all_regions(zone.region_count());
     for (uint32_t r = 0; r < all_regions.size(); ++r)
         all_regions[r] = r;
 
-    std::vector<WalkRow> rows;
-    rows.reserve(cameras.size());
+    std::vector<std::vector<WalkRow>> rows(pvss.size());
+    for (auto& list : rows)
+        list.reserve(cameras.size());
     std::vector<uint32_t> visible;
     std::vector<uint8_t> region_drawn(zone.region_count(), 0);
     for (size_t i = 0; i < cameras.size(); ++i) {
-        WalkRow row;
-        row.camera = cameras[i];
-        row.camera.aspect = float(options.width) / float(options.height);
-        row.cull = culler.cull(row.camera, {options.mode, true}, visible);
-        const Image ids = renderer.render(zone, row.camera, all_regions, RenderMode::IdBuffer);
-        row.accuracy = measure_image_accuracy(zone, face_regions, face_ids_of(ids), visible);
-        std::fill(region_drawn.begin(), region_drawn.end(), 0);
-        for (uint32_t r : visible)
-            region_drawn[r] = 1;
-        std::tie(row.popping_checked, row.popping_confirmed) = confirm_popping(
-            zone, face_regions, row.camera, ids, region_drawn, row.accuracy, options.max_rays_per_camera);
-        if (options.time_culled_render) {
-            const auto start = std::chrono::steady_clock::now();
-            renderer.render(zone, row.camera, visible, RenderMode::Textured);
-            row.render_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+        Camera camera = cameras[i];
+        camera.aspect = float(options.width) / float(options.height);
+        const Image ids = renderer.render(zone, camera, all_regions, RenderMode::IdBuffer);
+        const std::vector<int32_t> face_ids = face_ids_of(ids);
+        PixelSights sights(sight_check, camera, options.width, options.height);
+        for (size_t p = 0; p < pvss.size(); ++p) {
+            WalkRow row;
+            row.camera = camera;
+            row.cull = cullers[p]->cull(camera, {options.mode, true}, visible);
+            row.accuracy = measure_image_accuracy(zone, face_regions, face_ids, visible);
+            std::fill(region_drawn.begin(), region_drawn.end(), 0);
+            for (uint32_t r : visible)
+                region_drawn[r] = 1;
+            confirm_popping(face_regions, ids, region_drawn, sights, row);
+            if (options.time_culled_render) {
+                const auto start = std::chrono::steady_clock::now();
+                renderer.render(zone, camera, visible, RenderMode::Textured);
+                row.render_ms =
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            }
+            rows[p].push_back(std::move(row));
         }
-        rows.push_back(std::move(row));
         if (options.progress && !options.progress(i + 1, cameras.size()))
             break;
     }
     return rows;
+}
+
+std::vector<WalkRow> run_accuracy_walk(const Zone& zone, const Pvs* pvs, std::span<const Camera> cameras,
+                                       const WalkOptions& options)
+{
+    const Pvs* one[] = {pvs};
+    return std::move(run_accuracy_walks(zone, one, cameras, options).front());
 }
 
 } // namespace pvs::ui

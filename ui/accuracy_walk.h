@@ -1,11 +1,24 @@
 // Image-space accuracy over a set of cameras: for each camera, cull, render the whole zone into
 // the exact ID buffer (what is really on screen), and measure what the culled set would pop or
 // overdraw (visibility/eval/image_accuracy.h). Optionally time the culled frame's textured render.
+//
+// Popping that cannot be fooled: a raster pixel whose face was not drawn counts as confirmed
+// popping only when the sight line from the camera to the point of that face is open in the
+// zone's geometry (visibility/eval/sight_check.h: traced through the BSP tree's leaves). A
+// rasteriser shows, here and there, a pixel of a face behind a crack between two triangles of a
+// wall (T-junction gaps); those pixels are Blocked by the wall's solid leaf and are counted apart
+// as cracks, as are pixels the check cannot decide (no tree, a face seen edge-on). Every popping
+// pixel is checked; the check is a walk down the tree, about a microsecond.
+//
+// Several PVSs can be measured over the same cameras in one pass (run_accuracy_walks): each
+// camera's ID buffer is rendered once and each pixel's sight line traced at most once, whatever
+// the number of PVSs (pvscope compare measures every method this way).
 #pragma once
 
 #include "visibility/camera.h"
 #include "visibility/culler.h"
 #include "visibility/eval/image_accuracy.h"
+#include "visibility/portal/media.h"
 #include "visibility/zone.h"
 
 #include <functional>
@@ -18,20 +31,19 @@ struct WalkRow {
     Camera camera;
     CullStats cull;
     double render_ms = 0; // textured render of the culled frame; 0 unless timed
-    ImageAccuracy accuracy;
-    // Popping pixels re-checked by an exact ray cast through the pixel centre (up to
-    // WalkOptions::max_rays_per_camera of them, evenly spread): confirmed when the first face the
-    // ray hits was not drawn. A rasteriser shows, here and there, a pixel of a face behind a
-    // T-junction crack in the level's geometry; the ray tells those apart from true popping.
-    uint64_t popping_checked = 0;
-    uint64_t popping_confirmed = 0;
+    ImageAccuracy accuracy; // raster popping (accuracy.popping_pixels) and overdraw
+    uint64_t popping_confirmed = 0; // raster popping pixels whose sight line is open: true popping
+    uint64_t popping_cracks = 0;    // raster popping pixels whose sight line is blocked or undecided
+    // Regions the confirmed sight lines end in (where the popped faces were seen), ascending:
+    // each must be in the PVS row of the camera's region and is not.
+    std::vector<uint32_t> confirmed_regions;
 };
 
 struct WalkOptions {
     CullMode mode = CullMode::PvsFrustum;
     uint32_t width = 320, height = 240;
     bool time_culled_render = false;
-    uint32_t max_rays_per_camera = 64;
+    SkyPortals sky = SkyPortals::SkyToSky; // the content rule of the sight-line check
     // Called after each camera with (done, total); return false to stop early.
     std::function<bool(size_t, size_t)> progress;
 };
@@ -39,5 +51,9 @@ struct WalkOptions {
 // `pvs` may be null (frustum only). Camera aspects are set to width/height.
 std::vector<WalkRow> run_accuracy_walk(const Zone& zone, const Pvs* pvs, std::span<const Camera> cameras,
                                        const WalkOptions& options);
+
+// One walk per PVS (null entries: frustum only) over the same cameras: result[p][camera].
+std::vector<std::vector<WalkRow>> run_accuracy_walks(const Zone& zone, std::span<const Pvs* const> pvss,
+                                                     std::span<const Camera> cameras, const WalkOptions& options);
 
 } // namespace pvs::ui

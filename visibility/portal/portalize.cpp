@@ -14,31 +14,6 @@ namespace {
 // What a piece's side has resolved to.
 enum class LeafKind : uint8_t { Open, Solid, Outside };
 
-// Media for the §2.6 rule.
-enum class Medium : uint8_t { Air, Liquid, Sky };
-
-Medium medium_of(uint32_t flags)
-{
-    if (flags & kRegionSky)
-        return Medium::Sky;
-    if (flags & (kRegionWater | kRegionSlime | kRegionLava | kRegionVWater))
-        return Medium::Liquid;
-    return Medium::Air;
-}
-
-bool sees_through(Medium a, Medium b, SkyPortals sky)
-{
-    if (a == Medium::Sky || b == Medium::Sky) {
-        switch (sky) {
-        case SkyPortals::SkyToSky: return a == b;
-        case SkyPortals::All: return true;
-        case SkyPortals::None: return false;
-        }
-        return false;
-    }
-    return true; // air <-> air, air <-> liquid, liquid <-> liquid: liquids are translucent
-}
-
 // Every point within `epsilon` of the plane (computed in double, as Winding does).
 bool lies_on(const Winding& w, const Plane& plane, float epsilon)
 {

@@ -26,10 +26,10 @@
 //    removed (Winding::remove_degenerate_points), has fewer than three points or an area of at
 //    most PortalOptions::min_area: dropped (it touches the other leaf along an edge or a
 //    point, or is round-off);
-//  - media: a region is sky (kRegionSky), liquid (water, slime, lava, vwater) or air. Air and
-//    liquids see through each other (ericw -transwater, the default: liquids are translucent,
-//    also to each other); sky sees only sky. Sky <-> air and sky <-> liquid pieces are dropped
-//    (PortalOptions::sky changes that: SkyPortals below).
+//  - media (media.h, the one content rule shared with the reference and the popping check): a
+//    piece between two regions whose media do not see through each other is dropped. By
+//    default sky sees only sky, air and liquids see each other (PortalOptions::sky changes the
+//    sky rule).
 //
 // Orientation, as PRT1 (§2.5): regions[0] is the region on the FRONT side of the node plane
 // (the front child's subtree), regions[1] the back one, and the points are clockwise seen from
@@ -65,6 +65,7 @@
 
 #include "visibility/geometry/bsp_volume.h"
 #include "visibility/geometry/winding.h"
+#include "visibility/portal/media.h"
 #include "visibility/math/aabb.h"
 #include "visibility/zone.h"
 
@@ -74,15 +75,7 @@
 
 namespace pvs {
 
-// Portals at sky regions (§2.6).
-enum class SkyPortals : uint8_t {
-    SkyToSky, // ericw's default: sky is not translucent, a sky leaf has portals to sky leaves only
-    All,      // ericw -transsky: sky sees through to air and liquids like a liquid
-    None,     // no portal at a sky leaf: sky is opaque to vis. The PVS shipped in id's Quake maps
-              // (e1m1, e2m1: compiled with Txqbsp and WVis) looks made this way: every sky leaf
-              // sees only itself, even its sky neighbours (tests/wld/test_portalize.cpp).
-};
-
+// Portals at sky regions (§2.6): SkyPortals, in media.h with the rest of the content rule.
 struct PortalOptions {
     // Side tolerance of the splits and of the degenerate-point removal, in zone units.
     float epsilon = kCellEpsilon;

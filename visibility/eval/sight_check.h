@@ -1,0 +1,64 @@
+// Is the face a pixel shows really visible from the eye? The test behind "confirmed popping"
+// (ui/accuracy_walk.h, pvscope walk and compare), decided by the geometry that bounds space,
+// not by the triangles a rasteriser or a ray-triangle test can slip between.
+//
+// For the ray eye + t * direction through a pixel that shows `face`, the hit point is where
+// the ray meets the face's plane (its first triangle with an area, in double). The segment from
+// the eye to just before that point is traced through the zone's BSP tree (tree_trace.h, the
+// content rule of media.h): it is Open when it stays in open leaves, Blocked when a solid,
+// outside or opaque leaf cuts it first. A pixel of a face seen through a crack between two
+// triangles of a wall (a T-junction gap, a "sparkle") is Blocked: the wall's leaf is solid
+// whatever its triangles do. The segment stops short of the hit point by kSightBackoff units
+// measured off the face's plane (at most kSightBackoffMax along the ray), because a face lies
+// on its leaf's boundary only to within its file's vertex noise (Quake: 0.1 units).
+//
+// Unknown: the zone has no tree, the ray does not meet the face's plane in front of the eye
+// (a face seen edge-on, or a pixel centre just off its face), or the face has no area. Callers
+// count Unknown with the cracks: it is never confirmed.
+//
+// Open gives end_region: the region the segment ends in, the one the face belongs to there,
+// which a PVS row of the eye's region must hold. Thread-safe (const); each thread passes its
+// own scratch.
+#pragma once
+
+#include "visibility/portal/media.h"
+#include "visibility/reference/tree_trace.h"
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace pvs {
+
+inline constexpr double kSightBackoff = 0.2;
+inline constexpr double kSightBackoffMax = 2.0;
+
+enum class Sight : uint8_t { Open, Blocked, Unknown };
+
+struct SightResult {
+    Sight sight = Sight::Unknown;
+    int32_t end_region = -1; // Open: the region the segment ends in
+    double hit_distance = 0; // along the (unit) ray to the face's plane; 0 when Unknown
+};
+
+class SightCheck {
+public:
+    explicit SightCheck(const Zone& zone, SkyPortals sky = SkyPortals::SkyToSky);
+
+    bool has_tree() const { return tracer_.has_tree(); }
+    // `direction` must be unit length.
+    SightResult face_along_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face,
+                               TreeTracer::Scratch& scratch) const;
+
+private:
+    struct FacePlane {
+        glm::dvec3 normal{0.0};
+        double dist = 0.0;
+        bool valid = false;
+    };
+    TreeTracer tracer_;
+    std::vector<FacePlane> planes_;
+};
+
+} // namespace pvs

@@ -1,0 +1,110 @@
+// The sampled reference: ground truth for every PVS pvscope bakes or reads. Region A sees region
+// B when some segment from a point of A to a point of B stays in open space; this estimates
+// that relation from below by tracing sight lines and keeping what they prove.
+//
+// Sampling. Ray i of region A starts at a point uniform in A's volume (region_sampler.h: its
+// convex cells, not its box), drawn from a counter-based hash of (seed, A, i), and goes in a
+// direction uniform on the sphere, stratified: point i of the (0,2)-sequence of Sobol's first two
+// dimensions, digitally shifted per region, through the equal-area map (z = 1 - 2u, phi = 2 pi v),
+// so the first 2^k directions of a region fill every elementary box of the unit square once. Each
+// ray is traced through the tree (tree_trace.h: exact in double, the content rule of media.h)
+// until it enters a solid, outside or opaque leaf, or leaves the world box. A sample whose trace
+// does not start in A (a point in the cells' epsilon margin) is rejected and counted.
+//
+// What a ray proves. Every region the ray passes through is visible from A, and more: any two
+// regions X and Y on its open stretch see each other, since the part of the ray between them is
+// itself such a segment (and the content rule is symmetric). So a ray crossing k regions sets the
+// k x k pairs among them, rows and columns alike. Every bit set is witnessed by a segment through
+// open space: the result is a LOWER bound of the true PVS (what a PVS must contain not to pop),
+// where a conservative portal vis is an upper bound. Symmetric by construction.
+//
+// Frontier lines. Volume lines find wide openings quickly and narrow ones (a sight line through two
+// doorways far apart) slowly. So each round also draws lines aimed at the frontier: for every pair
+// (A, B) not yet seen where B lies behind a portal of a region A sees, lines from a point on a
+// portal of A to a point on such a portal of B (portal_sampler.h, frontier.h), both ways round.
+// They are traced like any other line and prove only what they trace.
+//
+// Convergence. Rounds double the lines: round 0 traces params.initial_samples volume lines per
+// region and initial_frontier_samples lines per frontier pair; round k brings the volume total to
+// initial * 2^k (the new lines are the next indices, so the directions of every round's total are
+// stratified again) and gives each frontier pair of that round 2^k times the first count. After
+// each round the new bits are counted; the bake stops after a round whose new bits are fewer than
+// converge_share of all bits (it is then "converged"), or when the total would pass max_samples,
+// or on cancel. The report lists every round (lines, bits, new bits, time): how close it came.
+// Measured (docs/performance.md): on e1m1 the yield per doubling falls slowly (about 0.8x), so the
+// last bits of a big level cost hours; a bake of a minute leaves about 0.5 % of them unfound.
+//
+// Deterministic for a seed: line i of region A (or of frontier pair (A, B)) depends only on the seed,
+// the pair and i, the frontier pairs of a round only on the rows when it began, and bits are only
+// ever OR-ed in, so neither the thread count nor timing changes the result.
+//
+// Threads, progress, cancel: as bake_portal_vis (params.threads workers, 0 = all cores; the
+// calling thread calls progress(fraction) about every 50 ms with the fraction of the rays of
+// max_samples traced, and at 1; false cancels: the rows found so far are returned, still a lower
+// bound, and report.cancelled is set). on_round, when set, is called on the calling thread after
+// each finished round with the rows so far (compare keeps them as the reference at that count).
+//
+// Memory: the rows as a dense bit matrix while sampling (regions^2 / 8 bytes: 182 KB for e1m1,
+// 230 MB for a 43 000-region zone), the sampler's tetrahedra, one small stack per thread.
+// Zones without a tree are refused: every zone pvscope loads today has one (a mesh tracer for
+// tree-less OBJ zones comes with them).
+#pragma once
+
+#include "visibility/portal/media.h"
+#include "visibility/pvs.h"
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace pvs {
+
+struct ReferenceRound {
+    uint64_t samples_per_region = 0; // rays per region so far (the round's total)
+    uint64_t rays = 0;               // lines traced so far (volume and frontier, rejected samples included)
+    uint64_t bits = 0;               // set bits of all rows after this round
+    uint64_t new_bits = 0;           // of which this round found
+    double seconds = 0.0;            // wall clock since the bake started
+    uint64_t frontier_pairs = 0;     // pairs searched by frontier lines this round
+    uint64_t frontier_found = 0;     // of which a line joined
+    double new_share() const { return bits ? double(new_bits) / double(bits) : 0.0; }
+};
+
+struct ReferenceParams {
+    uint64_t seed = 1;
+    uint32_t initial_samples = 64;     // volume lines per region in round 0 (rounded up to a power of two)
+    uint32_t initial_frontier_samples = 8; // frontier lines per frontier pair in round 0
+    uint64_t max_samples = 1u << 18;   // rays per region at most
+    double converge_share = 0.001;     // stop after a round adding fewer than this share of the bits; 0: never
+    SkyPortals sky = SkyPortals::SkyToSky;
+    unsigned threads = 0;              // 0 = std::thread::hardware_concurrency()
+    std::function<bool(double fraction)> progress;
+    std::function<void(const ReferenceRound& round, const Pvs& rows)> on_round;
+};
+
+struct ReferenceReport {
+    std::vector<ReferenceRound> rounds;
+    bool converged = false;            // the last round added fewer than converge_share of the bits
+    bool cancelled = false;
+    uint64_t rays = 0;
+    uint64_t rejected_samples = 0;     // samples whose trace did not start in their region
+    uint32_t regions_without_volume = 0; // regions with nothing to sample (they see only themselves)
+    double seconds = 0.0;
+    unsigned threads = 0;
+    double mean_visible = 0.0;
+    size_t peak_bytes_estimate = 0;
+};
+
+// Throws std::invalid_argument for a zone without a BSP tree (nothing to trace here).
+Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, ReferenceReport* report = nullptr);
+
+// The ray of index i of a region, as the bake draws it (exposed for tests and the inspector):
+// u[0..3] for RegionSampler::point, and the unit direction.
+struct ReferenceRay {
+    double u[4];
+    glm::dvec3 direction;
+};
+ReferenceRay reference_ray(uint64_t seed, uint32_t region, uint64_t index);
+
+} // namespace pvs
