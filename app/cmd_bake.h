@@ -1,7 +1,10 @@
-// `pvscope bake FILE --method portal-fast|portal-full [--level L] [--threads N] [--sky MODE]
+// `pvscope bake FILE --method portal-fast|portal-full|clustered|reference [--level L] [--samples N] [--seed S] [--threads N] [--sky MODE]
 //  [--clusters none|auto] [--passages B] [--target-checks B] [--prt IN.prt] [--write-prt OUT.prt]
-//  [--report REPORT.json] -o OUT`: compute a PVS with the portal-vis baker
-// (visibility/portal/portal_vis.h) and write the zone back in its own format.
+//  [--report REPORT.json] -o OUT`: compute a PVS with one of the registry's bakers
+// (visibility/methods/vis_method.h) and write the zone back in its own format. portal-fast and
+// portal-full take the options below; clustered and reference run as the registry defines them
+// (no --prt / --clusters; the reference reads --samples and --seed and warns that a lower bound
+// can pop).
 //
 //  - Input: a Quake BSP 29 or an EverQuest .s3d, recognised from the bytes. Portals come from
 //    --prt (PRT1, PRT2 or PRT1-AM, whose leaf k must be region k: the file must name exactly the
@@ -47,6 +50,8 @@ struct BakeOptions {
     std::string prt_in;                 // portals from this PRT1/PRT2/PRT1-AM file instead of the tree
     std::string prt_out;                // also write the portals used (PRT1, or PRT2 over clusters)
     std::string report;                 // JSON report path, "-" for stdout
+    uint64_t samples = 0;               // reference: lines per region at most (0: until converged)
+    uint64_t seed = 1;                  // reference: sampling seed
 };
 
 // Runs the bake; messages and progress go to `err`. `cancel`, when given, is polled while the

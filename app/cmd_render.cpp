@@ -66,7 +66,7 @@ int run_render(const RenderOptions& options)
             locked ? std::optional<Camera>(make_camera(*cull_camera_values)) : std::nullopt;
 
         const PvsSource source = make_pvs_source(zone, options.pvs);
-        if (options.pvs != "baked" || !source.pvs)
+        if ((options.pvs != "baked" && options.pvs != "file") || !source.pvs)
             std::fprintf(stderr, "pvscope: PVS %s\n", source.note.c_str());
         Culler culler(zone, source.pvs);
         ui::SoftwareRenderer renderer((*size)[0], (*size)[1]);

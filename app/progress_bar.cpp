@@ -19,6 +19,16 @@ ProgressBar::ProgressBar(std::FILE* out, std::string label, Style style)
 
 ProgressBar::~ProgressBar() { finish(); }
 
+void ProgressBar::note(const std::string& line)
+{
+    if (terminal_ && !finished_)
+        std::fputs("\r\033[K", out_);
+    std::fprintf(out_, "%s\n", line.c_str());
+    if (terminal_ && !finished_)
+        draw(last_fraction_);
+    std::fflush(out_);
+}
+
 void ProgressBar::update(double fraction)
 {
     if (finished_)

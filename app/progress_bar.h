@@ -20,6 +20,9 @@ public:
     ~ProgressBar(); // finish()es if not done yet
 
     void update(double fraction); // fraction in [0, 1]; values outside are clamped
+    // Prints one line of text above the bar (a terminal's bar is cleared, the line written, the
+    // bar redrawn); as lines, just the line.
+    void note(const std::string& line);
     // Ends the display: on a terminal, redraws the last value and ends the line with `suffix`
     // ("done", "cancelled"); as lines, prints "label: suffix". Further calls do nothing.
     void finish(const std::string& suffix = "done");

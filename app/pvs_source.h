@@ -1,9 +1,7 @@
-// The PVS a command culls with, chosen by name on the command line (`--pvs`):
-//   baked        the PVS stored in the zone file (none when the file has none)
-//   none         no PVS: the culler falls back to the frustum
-//   portal-fast  baked now: portals built from the zone's tree, base flow only
-//   portal-full  baked now: portals built from the zone's tree, full flow (test level 4)
-// so that `walk` and `render` can measure pvscope's own PVS against the file's on the same
+// The PVS a command culls with, chosen by name on the command line (`--pvs`): any method of the
+// registry (visibility/methods/vis_method.h) — `file` (the PVS stored in the zone file; `baked`
+// is kept as its older name), `none` (the frustum only), or a method baked now (portal-fast,
+// portal-full, clustered, reference) — so that `walk` and `render` measure any PVS on the same
 // cameras. Baking uses every core; the note says what was used and how long it took.
 #pragma once
 
@@ -22,9 +20,11 @@ struct PvsSource {
     std::string note;             // one line for the user, e.g. "portal-full: 1206 regions, 0.9 s"
 };
 
+// The registry's names, and "baked".
 const std::vector<std::string>& pvs_source_names();
 
-// Throws std::invalid_argument for an unknown name. The returned source may point into `zone`.
+// Throws std::invalid_argument for an unknown name, or from the method (the reference on a zone
+// without a tree). The returned source may point into `zone`.
 PvsSource make_pvs_source(const Zone& zone, const std::string& name);
 
 } // namespace pvs::app

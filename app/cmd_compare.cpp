@@ -1,0 +1,234 @@
+#include "app/cmd_compare.h"
+
+#include "app/arguments.h"
+#include "app/progress_bar.h"
+#include "app/sigint_scope.h"
+#include "ui/chart/chart_png.h"
+#include "ui/chart/svg_canvas.h"
+#include "ui/method_compare.h"
+#include "visibility/file_error.h"
+#include "wld/common/read_file.h"
+#include "wld/zone_file.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+namespace pvs::app {
+
+namespace {
+
+constexpr int kExitFileError = 1;
+constexpr int kExitBadArguments = 2;
+constexpr int kExitCancelled = 130;
+
+std::vector<std::string> split_list(const std::string& text)
+{
+    std::vector<std::string> names;
+    std::stringstream in(text);
+    for (std::string name; std::getline(in, name, ',');)
+        if (!name.empty())
+            names.push_back(name);
+    return names;
+}
+
+SkyPortals sky_mode(const std::string& name)
+{
+    return name == "all" ? SkyPortals::All : name == "none" ? SkyPortals::None : SkyPortals::SkyToSky;
+}
+
+std::string csv_text(const ui::CompareResult& result)
+{
+    std::ostringstream out;
+    out << "method,params,bound,wall_s,cpu_s,peak_mib,estimate_mib,pvs_bytes,mean_visible,missing_bits,excess_bits,"
+           "rows_missing_bits,popping_pixels,crack_pixels,triangle_overdraw\n";
+    for (const ui::CompareRow& r : result.rows)
+        out << r.method << ',' << r.params << ',' << bound_name(r.bound) << ',' << r.wall_s << ',' << r.cpu_s << ','
+            << r.peak_mib << ',' << r.estimate_mib << ',' << r.pvs_bytes << ',' << r.mean_visible << ','
+            << r.missing_bits << ',' << r.excess_bits << ',' << r.rows_missing_bits << ',' << r.popping_pixels << ','
+            << r.crack_pixels << ',' << r.triangle_overdraw << '\n';
+    return out.str();
+}
+
+nlohmann::json json_report(const CompareCommandOptions& o, const Zone& zone, const ui::CompareResult& result)
+{
+    nlohmann::json rows = nlohmann::json::array();
+    for (const ui::CompareRow& r : result.rows)
+        rows.push_back({{"method", r.method},
+                        {"params", r.params},
+                        {"bound", bound_name(r.bound)},
+                        {"wall_s", r.wall_s},
+                        {"cpu_s", r.cpu_s},
+                        {"peak_mib", r.peak_mib},
+                        {"estimate_mib", r.estimate_mib},
+                        {"pvs_bytes", r.pvs_bytes},
+                        {"mean_visible", r.mean_visible},
+                        {"missing_bits", r.missing_bits},
+                        {"excess_bits", r.excess_bits},
+                        {"rows_missing_bits", r.rows_missing_bits},
+                        {"popping_pixels", r.popping_pixels},
+                        {"crack_pixels", r.crack_pixels},
+                        {"triangle_overdraw", r.triangle_overdraw},
+                        {"summary", r.summary}});
+    return {{"input", o.input},
+            {"regions", zone.region_count()},
+            {"reference", {{"params", result.reference_params}, {"bits", result.reference_bits}}},
+            {"cameras", result.cameras},
+            {"size", o.size},
+            {"sky", o.sky},
+            {"methods", rows}};
+}
+
+std::vector<ui::chart::ChartPoint> chart_points(const ui::CompareResult& result)
+{
+    std::vector<ui::chart::ChartPoint> points;
+    for (const ui::CompareRow& r : result.rows) {
+        ui::chart::ChartPoint p;
+        p.method = r.method;
+        p.label = r.method;
+        if (r.method == "portal-full" || r.method == "clustered") {
+            // Short labels: "L2", "L4 -passages", "L4 -checks".
+            const bool passages = r.params.find("passages=off") == std::string::npos;
+            const bool checks = r.params.find("target-checks=off") == std::string::npos;
+            const size_t level = r.params.find("level=");
+            p.label += " L" + r.params.substr(level + 6, 1) + (passages ? "" : " -passages") + (checks ? "" : " -checks");
+        } else if (r.method == "reference")
+            p.label += " " + r.params.substr(r.params.find('=') + 1, r.params.find(' ') - r.params.find('=') - 1);
+        p.seconds = r.baked ? r.wall_s : 0.0;
+        p.missing_bits = double(r.missing_bits);
+        p.excess_bits = double(r.excess_bits);
+        points.push_back(p);
+    }
+    return points;
+}
+
+void write_text(const std::string& path, const std::string& text)
+{
+    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+void write_chart(const std::string& path, const std::string& title, const ui::CompareResult& result)
+{
+    const std::vector<ui::chart::ChartPoint> points = chart_points(result);
+    constexpr uint32_t kWidth = 1200, kHeight = 560;
+    if (std::filesystem::path(path).extension() == ".svg") {
+        ui::chart::SvgCanvas svg(kWidth, kHeight);
+        ui::chart::draw_speed_accuracy_chart(points, title, svg, {0, 0}, {float(kWidth), float(kHeight)});
+        write_text(path, svg.svg());
+    } else
+        ui::chart::write_chart_png(points, title, kWidth, kHeight, path);
+}
+
+void print_table(std::FILE* out, const ui::CompareResult& result)
+{
+    std::fprintf(out, "%-12s %-42s %8s %8s %8s %9s %10s %10s %9s %9s\n", "method", "params", "wall_s", "cpu_s",
+                 "peak_MiB", "mean_vis", "missing", "excess", "popping", "overdraw");
+    for (const ui::CompareRow& r : result.rows)
+        std::fprintf(out, "%-12s %-42s %8.3f %8.3f %8.1f %9.1f %10llu %10llu %9llu %9.2f\n", r.method.c_str(),
+                     r.params.c_str(), r.wall_s, r.cpu_s, r.peak_mib, r.mean_visible,
+                     static_cast<unsigned long long>(r.missing_bits), static_cast<unsigned long long>(r.excess_bits),
+                     static_cast<unsigned long long>(r.popping_pixels), r.triangle_overdraw);
+    std::fprintf(out, "reference: %s, %llu bits; walk: %zu cameras. missing = reference bits the method lacks "
+                      "(would pop), excess = bits beyond the reference\n",
+                 result.reference_params.c_str(), static_cast<unsigned long long>(result.reference_bits),
+                 result.cameras);
+}
+
+int run_checked(const CompareCommandOptions& o, std::FILE* out, std::FILE* err)
+{
+    const auto size = parse_size_argument(o.size);
+    if (!size) {
+        std::fprintf(err, "pvscope: error: --size must be WIDTHxHEIGHT, not '%s'\n", o.size.c_str());
+        return kExitBadArguments;
+    }
+    ui::CompareOptions options;
+    options.methods = split_list(o.methods);
+    for (const std::string& name : options.methods)
+        if (!find_vis_method(name)) {
+            std::fprintf(err, "pvscope: error: --methods: unknown method '%s' (%s)\n", name.c_str(),
+                         vis_method_names().c_str());
+            return kExitBadArguments;
+        }
+    options.reference_samples = o.samples;
+    options.seed = o.seed;
+    options.cameras = o.cameras;
+    options.width = (*size)[0];
+    options.height = (*size)[1];
+    options.sky = sky_mode(o.sky);
+    options.threads = o.threads;
+    const Zone zone = load_zone(o.input);
+    std::unique_ptr<ProgressBar> bar;
+    std::string shown;
+    options.progress = [&](const std::string& stage, double fraction) {
+        if (stage != shown) {
+            bar = std::make_unique<ProgressBar>(err, stage);
+            shown = stage;
+        }
+        bar->update(fraction);
+        return !SigintScope::interrupted().load();
+    };
+    const ui::CompareResult result = ui::run_compare(zone, options);
+    bar.reset();
+    if (result.cancelled) {
+        std::fprintf(err, "pvscope: compare cancelled: nothing was written\n");
+        return kExitCancelled;
+    }
+    print_table(out, result);
+    if (!o.csv.empty())
+        write_text(o.csv, csv_text(result));
+    if (!o.json.empty())
+        write_text(o.json, json_report(o, zone, result).dump(2) + "\n");
+    if (!o.chart.empty())
+        write_chart(o.chart, std::filesystem::path(o.input).filename().string() + ": speed against accuracy", result);
+    return 0;
+}
+
+} // namespace
+
+int run_compare_command(const CompareCommandOptions& options, std::FILE* out, std::FILE* err)
+{
+    try {
+        return run_checked(options, out, err);
+    } catch (const FileError& e) {
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+        return kExitFileError;
+    } catch (const std::exception& e) { // a zone without a tree, a chart that cannot be written
+        std::fprintf(err, "pvscope: error: %s: %s\n", options.input.c_str(), e.what());
+        return kExitFileError;
+    }
+}
+
+void register_compare_command(CLI::App& app, int& exit_code)
+{
+    auto o = std::make_shared<CompareCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "compare", "Every visibility method on one zone against the sampled reference: time, memory, missing and "
+                   "excess bits, exact popping and overdraw; table, CSV, JSON and a speed-vs-accuracy chart");
+    cmd->add_option("file", o->input, "Zone file")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--methods", o->methods, "Comma-separated methods (default: all): " + vis_method_names() +
+                                                 "; portal-full runs at levels 1-4 and without passages / target "
+                                                 "checks. The reference always runs.");
+    cmd->add_option("--samples", o->samples, "Reference: sight lines per region at most (0: until a doubling adds "
+                                             "under 0.1% of the bits, up to 8192); each doubling is a point")
+        ->capture_default_str();
+    cmd->add_option("--seed", o->seed, "Seed of the reference and the cameras")->capture_default_str();
+    cmd->add_option("--cameras", o->cameras, "Seeded cameras for popping and overdraw (0: no walk)")
+        ->capture_default_str();
+    cmd->add_option("--size", o->size, "Size of each camera's ID buffer")->capture_default_str();
+    cmd->add_option("--sky", o->sky, "Portals and sight lines at sky leaves: sky-to-sky, all, none")
+        ->check(CLI::IsMember({"sky-to-sky", "all", "none"}))
+        ->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
+    cmd->add_option("--csv", o->csv, "Write one CSV row per method and parameter");
+    cmd->add_option("--json", o->json, "Write the results as JSON");
+    cmd->add_option("--chart", o->chart, "Write the speed-vs-accuracy chart (.png, or .svg)");
+    cmd->callback([o, &exit_code] {
+        const SigintScope sigint;
+        exit_code = run_compare_command(*o);
+    });
+}
+
+} // namespace pvs::app

@@ -1,0 +1,42 @@
+#include "visibility/eval/pvs_gap.h"
+
+#include "visibility/bit_row.h"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pvs {
+
+PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference)
+{
+    const uint32_t regions = reference.region_count();
+    if (pvs && pvs->region_count() != regions)
+        throw std::invalid_argument("the PVS has " + std::to_string(pvs->region_count()) +
+                                    " rows and the reference " + std::to_string(regions));
+    const size_t words = reference.words_per_row();
+    std::vector<uint64_t> ours(words), theirs(words);
+    if (!pvs)
+        bits::fill(ours, regions); // none: every region, every row
+    PvsGap gap;
+    for (uint32_t r = 0; r < regions; ++r) {
+        if (pvs)
+            pvs->decode_row(r, ours);
+        reference.decode_row(r, theirs);
+        uint64_t row_missing = 0;
+        for (size_t w = 0; w < words; ++w) {
+            gap.bits += uint64_t(std::popcount(ours[w]));
+            gap.reference_bits += uint64_t(std::popcount(theirs[w]));
+            row_missing += uint64_t(std::popcount(theirs[w] & ~ours[w]));
+            gap.excess_bits += uint64_t(std::popcount(ours[w] & ~theirs[w]));
+        }
+        gap.missing_bits += row_missing;
+        gap.rows_missing_bits += row_missing ? 1 : 0;
+    }
+    gap.mean_visible = regions ? double(gap.bits) / regions : 0.0;
+    return gap;
+}
+
+} // namespace pvs

@@ -1,0 +1,27 @@
+// How far a PVS is from a reference, bit by bit: the two sides of the gap compare reports.
+//   missing bits  pairs (A, B) the reference has and the PVS lacks: sight lines the PVS would
+//                 pop (a conservative PVS against a lower-bound reference must have none);
+//   excess bits   pairs the PVS has beyond the reference: an upper bound of the overdraw it causes
+//                 (against a sampled reference, also the true pairs the sampling has not found).
+// A null PVS is "none": every row full. A missing row (Pvs::row_missing) is full, as culling
+// reads it. Both PVSs must have the same region count (std::invalid_argument otherwise).
+#pragma once
+
+#include "visibility/pvs.h"
+
+#include <cstdint>
+
+namespace pvs {
+
+struct PvsGap {
+    uint64_t bits = 0;           // set bits of the PVS
+    uint64_t reference_bits = 0; // set bits of the reference
+    uint64_t missing_bits = 0;
+    uint64_t excess_bits = 0;
+    uint32_t rows_missing_bits = 0; // rows with at least one missing bit
+    double mean_visible = 0.0;      // bits / regions
+};
+
+PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference);
+
+} // namespace pvs

@@ -1,0 +1,195 @@
+#include "visibility/methods/vis_method.h"
+
+#include "visibility/portal/box_clusters.h"
+#include "visibility/portal/cluster_vis.h"
+#include "visibility/portal/portal_vis.h"
+#include "visibility/portal/portalize.h"
+#include "visibility/portal/region_clusters.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace pvs {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string format(const char* fmt, auto... args)
+{
+    char text[256];
+    std::snprintf(text, sizeof text, fmt, args...);
+    return text;
+}
+
+const char* on_off(bool b) { return b ? "on" : "off"; }
+
+std::string no_label(const MethodSettings&) { return {}; }
+std::string full_label(const MethodSettings& s)
+{
+    return format("level=%d passages=%s target-checks=%s", s.level, on_off(s.passages), on_off(s.target_checks));
+}
+std::string reference_label(const MethodSettings& s)
+{
+    return (s.samples ? "samples=" + std::to_string(s.samples) : std::string("converged")) +
+           " seed=" + std::to_string(s.seed);
+}
+
+VisParams vis_params(const MethodSettings& s, VisParams::Method method)
+{
+    VisParams params;
+    params.method = method;
+    params.level = s.level;
+    params.threads = s.threads;
+    if (!s.passages)
+        params.passage_budget_bytes = 0;
+    params.target_checks = s.target_checks;
+    params.progress = s.progress;
+    return params;
+}
+
+PortalSet zone_portals(const Zone& zone, const MethodSettings& s)
+{
+    PortalOptions options;
+    options.sky = s.sky;
+    return build_zone_portals(zone, options);
+}
+
+MethodRun run_from_report(Pvs pvs, const VisReport& report, double seconds, const std::string& what)
+{
+    MethodRun run;
+    run.seconds = seconds;
+    run.peak_bytes_estimate = report.peak_bytes_estimate;
+    run.cancelled = report.cancelled;
+    run.summary = format("%s: %zu portals, mean %.1f visible of %u regions, %.2f s on %u threads", what.c_str(),
+                         report.portals, report.mean_visible, pvs.region_count(), seconds, report.threads);
+    run.pvs = std::move(pvs);
+    return run;
+}
+
+MethodRun run_file(const Zone& zone, const MethodSettings&)
+{
+    MethodRun run;
+    run.pvs = zone.baked_pvs;
+    run.summary = zone.baked_pvs ? "file: the PVS the file carries" : "file: the file has no PVS";
+    return run;
+}
+
+MethodRun run_none(const Zone&, const MethodSettings&)
+{
+    MethodRun run;
+    run.summary = "none: no PVS, the frustum only";
+    return run;
+}
+
+MethodRun run_portal(const Zone& zone, const MethodSettings& s, VisParams::Method method, const char* name)
+{
+    const auto start = std::chrono::steady_clock::now();
+    VisReport report;
+    Pvs pvs = bake_portal_vis(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
+    return run_from_report(std::move(pvs), report, seconds_since(start), name);
+}
+
+MethodRun run_portal_fast(const Zone& zone, const MethodSettings& s)
+{
+    return run_portal(zone, s, VisParams::Method::Fast, "portal-fast");
+}
+
+MethodRun run_portal_full(const Zone& zone, const MethodSettings& s)
+{
+    return run_portal(zone, s, VisParams::Method::Full, "portal-full");
+}
+
+// Box clusters where the zone's regions are boxes (generated zones), else the tree's subtrees.
+MethodRun run_clustered(const Zone& zone, const MethodSettings& s)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const PortalSet portals = zone_portals(zone, s);
+    const bool boxes = regions_are_boxes(zone.regions, portals);
+    const RegionClusters clusters =
+        boxes ? box_merge_clusters(zone.regions, portals) : bsp_subtree_clusters(zone.tree, zone.regions);
+    VisReport report;
+    ClusterReport cluster_report;
+    Pvs pvs = bake_clustered_portal_vis(portals, clusters.cluster_of_region, clusters.cluster_count,
+                                        vis_params(s, VisParams::Method::Full), &report, &cluster_report);
+    MethodRun run = run_from_report(std::move(pvs), report, seconds_since(start), "clustered");
+    run.summary += format(" (%u %s clusters)", clusters.cluster_count, boxes ? "box" : "subtree");
+    return run;
+}
+
+MethodRun run_reference(const Zone& zone, const MethodSettings& s)
+{
+    ReferenceParams params;
+    params.seed = s.seed;
+    params.sky = s.sky;
+    params.threads = s.threads;
+    params.progress = s.progress;
+    params.on_round = s.on_reference_round;
+    if (s.samples) { // exactly what was asked for: no early stop
+        params.max_samples = s.samples;
+        params.initial_samples = uint32_t(std::min<uint64_t>(params.initial_samples, s.samples));
+        params.converge_share = 0.0;
+    }
+    ReferenceReport report;
+    Pvs pvs = bake_reference_vis(zone, params, &report);
+    MethodRun run;
+    run.seconds = report.seconds;
+    run.peak_bytes_estimate = report.peak_bytes_estimate;
+    run.cancelled = report.cancelled;
+    const ReferenceRound last = report.rounds.empty() ? ReferenceRound{} : report.rounds.back();
+    run.summary = format("reference: %s lines, %s per region, mean %.1f visible of %u regions, last doubling "
+                         "added %.3f%%%s, %.2f s on %u threads",
+                         std::to_string(report.rays).c_str(), std::to_string(last.samples_per_region).c_str(),
+                         report.mean_visible, pvs.region_count(), 100.0 * last.new_share(),
+                         report.converged ? " (converged)" : "", report.seconds, report.threads);
+    run.pvs = std::move(pvs);
+    return run;
+}
+
+constexpr VisMethod kMethods[] = {
+    {"file", "the PVS stored in the zone file", Bound::Unknown, false, run_file, no_label},
+    {"none", "no PVS: the frustum only", Bound::Everything, false, run_none, no_label},
+    {"portal-fast", "base portal vis: loose, conservative", Bound::Upper, true, run_portal_fast, no_label},
+    {"portal-full", "clipped portal flow (as Quake's vis): conservative", Bound::Upper, true, run_portal_full,
+     full_label},
+    {"clustered", "portal-full over clusters of regions: faster on big zones, looser", Bound::Upper, true,
+     run_clustered, full_label},
+    {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true,
+     run_reference, reference_label},
+};
+
+} // namespace
+
+const char* bound_name(Bound bound)
+{
+    switch (bound) {
+    case Bound::Upper: return "upper";
+    case Bound::Lower: return "lower";
+    case Bound::Everything: return "everything";
+    case Bound::Unknown: break;
+    }
+    return "unknown";
+}
+
+std::span<const VisMethod> vis_methods() { return kMethods; }
+
+const VisMethod* find_vis_method(std::string_view name)
+{
+    for (const VisMethod& m : kMethods)
+        if (m.name == name)
+            return &m;
+    return nullptr;
+}
+
+std::string vis_method_names()
+{
+    std::string names;
+    for (const VisMethod& m : kMethods)
+        names += (names.empty() ? "" : ", ") + std::string(m.name);
+    return names;
+}
+
+} // namespace pvs

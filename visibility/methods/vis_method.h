@@ -1,0 +1,81 @@
+// The registry of visibility methods: one entry per way pvscope can come by a PVS, so that
+// `bake`, `compare`, `--pvs` and the inspector list the same methods with the same names, and a
+// method added here appears in all of them at once.
+//
+//   file         the PVS the zone file carries (nothing is baked; absent when the file has none)
+//   none         no PVS: culling falls back to the frustum (every region "visible")
+//   portal-fast  base portal vis (portal_vis.h, Method::Fast): loose, conservative
+//   portal-full  clipped portal flow at settings.level, with or without passages and target
+//                checks: conservative (an upper bound of the true PVS)
+//   clustered    portal-full over clusters of regions (cluster_vis.h): box clusters where the
+//                regions are boxes, else BSP subtree clusters; looser, conservative
+//   reference    sampled sight lines through the tree (reference/reference_vis.h): a lower bound
+//
+// Each entry says which side of the truth it sits on (Bound), so compare can say which failures
+// matter: an upper bound must miss nothing the reference finds, a lower bound may pop. Bakes run
+// on settings.threads workers, call settings.progress and stop when it returns false (the run is
+// then `cancelled` and holds whatever the method had). Library code: no output, no exit; bad zones
+// throw as the bakers do (std::invalid_argument, e.g. the reference on a zone without a tree).
+#pragma once
+
+#include "visibility/portal/media.h"
+#include "visibility/pvs.h"
+#include "visibility/reference/reference_vis.h"
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace pvs {
+
+enum class Bound : uint8_t {
+    Upper, // conservative: holds every true sight line (and more)
+    Lower, // holds only proven sight lines (and may miss some)
+    Unknown, // the file's: whatever its tool did
+    Everything, // none: every region
+};
+const char* bound_name(Bound bound);
+
+struct MethodSettings {
+    SkyPortals sky = SkyPortals::SkyToSky; // portals and sight lines at sky leaves
+    unsigned threads = 0;                  // 0 = all cores
+    // portal-full and clustered:
+    int level = 4;
+    bool passages = true;
+    bool target_checks = true;
+    // reference: lines per region at most (0: the default, until converged), and the seed.
+    uint64_t samples = 0;
+    uint64_t seed = 1;
+    std::function<bool(double fraction)> progress;
+    std::function<void(const ReferenceRound& round, const Pvs& rows)> on_reference_round;
+};
+
+struct MethodRun {
+    std::optional<Pvs> pvs;         // none: no PVS; file: a copy of the zone's (absent if it has none)
+    double seconds = 0.0;           // the bake's wall clock (0 for file and none)
+    size_t peak_bytes_estimate = 0; // the baker's own estimate of its largest heap use
+    bool cancelled = false;
+    std::string summary;            // one line for a user: what ran and what it found
+};
+
+struct VisMethod {
+    std::string_view name;
+    std::string_view description;
+    Bound bound;
+    bool bakes;                     // false for file and none: nothing to compute
+    MethodRun (*run)(const Zone& zone, const MethodSettings& settings);
+    // The settings this method reads, for a label such as "level=2 passages=off" (compare, chart).
+    std::string (*label)(const MethodSettings& settings);
+};
+
+std::span<const VisMethod> vis_methods();
+// nullptr when no method has that name.
+const VisMethod* find_vis_method(std::string_view name);
+// "file, none, portal-fast, ..." for messages and --help.
+std::string vis_method_names();
+
+} // namespace pvs
