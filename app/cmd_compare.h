@@ -6,7 +6,7 @@
 // progress on stderr; Ctrl-C cancels (nothing written, exit 130).
 //
 // CSV columns: method,params,bound,wall_s,cpu_s,peak_mib,estimate_mib,pvs_bytes,mean_visible,
-// missing_bits,excess_bits,rows_missing_bits,popping_pixels,crack_pixels,triangle_overdraw.
+// missing_bits,excess_bits,rows_missing_bits,popping_pixels,crack_pixels,grazing_pixels,triangle_overdraw.
 // Exit codes: 0 done, 1 the file could not be read or a result written, 2 bad arguments, 130 cancelled.
 #pragma once
 

@@ -69,7 +69,7 @@ private:
     TreeTracer::Scratch scratch_;
 };
 
-// Splits the raster popping pixels into confirmed and cracks.
+// Splits the raster popping pixels into confirmed, unlisted, grazing and cracks.
 void confirm_popping(const FaceRegions& face_regions, const Image& ids, const std::vector<uint8_t>& region_drawn,
                      PixelSights& sights, WalkRow& row)
 {
@@ -87,8 +87,17 @@ void confirm_popping(const FaceRegions& face_regions, const Image& ids, const st
             if (face == kNoFace || face >= face_regions.offsets.size() - 1 || drawn(face))
                 continue;
             const SightResult& sight = sights.at(x, y, face);
+            if (sight.sight == Sight::Grazing) {
+                ++row.popping_grazing;
+                continue;
+            }
             if (sight.sight != Sight::Open) {
                 ++row.popping_cracks;
+                continue;
+            }
+            if (sight.end_region >= 0 && size_t(sight.end_region) < region_drawn.size() &&
+                region_drawn[size_t(sight.end_region)]) {
+                ++row.popping_unlisted; // the line ends in a kept region: the face's list, not the PVS
                 continue;
             }
             ++row.popping_confirmed;

@@ -7,7 +7,11 @@
 // zone's geometry (visibility/eval/sight_check.h: traced through the BSP tree's leaves). A
 // rasteriser shows, here and there, a pixel of a face behind a crack between two triangles of a
 // wall (T-junction gaps); those pixels are Blocked by the wall's solid leaf and are counted apart
-// as cracks, as are pixels the check cannot decide (no tree, a face seen edge-on). Every popping
+// as cracks, as are pixels the check cannot decide (no tree, a face seen edge-on). Pixels whose
+// line is open but passes within kSightMargin of a wall's edge are grazing, counted apart too.
+// A confirmed pixel's line ends in a region the culler dropped (the PVS's failure); an open line
+// that ends in a region it kept, at a face none of the kept regions lists, is "unlisted": the
+// zone's face-to-region lists failed there (Quake's marksurfaces), not the PVS. Every popping
 // pixel is checked; the check is a walk down the tree, about a microsecond.
 //
 // Several PVSs can be measured over the same cameras in one pass (run_accuracy_walks): each
@@ -34,6 +38,10 @@ struct WalkRow {
     ImageAccuracy accuracy; // raster popping (accuracy.popping_pixels) and overdraw
     uint64_t popping_confirmed = 0; // raster popping pixels whose sight line is open: true popping
     uint64_t popping_cracks = 0;    // raster popping pixels whose sight line is blocked or undecided
+    uint64_t popping_unlisted = 0;  // open sight lines that end in a region the culler kept, at a
+                                    // face no kept region lists: the zone's face lists, not the PVS
+    uint64_t popping_grazing = 0;   // raster popping pixels whose sight line is open by less than
+                                    // kSightMargin (sight_check.h): hair-thin lines vis drops
     // Regions the confirmed sight lines end in (where the popped faces were seen), ascending:
     // each must be in the PVS row of the camera's region and is not.
     std::vector<uint32_t> confirmed_regions;

@@ -160,6 +160,7 @@ void measure_walk(const Zone& zone, const CompareOptions& o, CompareResult& resu
         for (const WalkRow& w : walks[p]) {
             row.popping_pixels += w.popping_confirmed;
             row.crack_pixels += w.popping_cracks;
+            row.grazing_pixels += w.popping_grazing;
             overdraw += w.accuracy.triangle_overdraw();
         }
         row.triangle_overdraw = walks[p].empty() ? 0.0 : overdraw / double(walks[p].size());

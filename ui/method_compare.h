@@ -59,6 +59,7 @@ struct CompareRow {
     uint32_t rows_missing_bits = 0;
     uint64_t popping_pixels = 0;    // confirmed by the tree trace, over all cameras
     uint64_t crack_pixels = 0;      // raster popping the trace rejected
+    uint64_t grazing_pixels = 0;    // raster popping open only by less than kSightMargin
     double triangle_overdraw = 0;   // mean over cameras (drawn / needed triangles)
     std::string summary;
     std::optional<Pvs> pvs;         // the rows (none: empty), for the panel to cull with

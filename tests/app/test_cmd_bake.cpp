@@ -289,3 +289,37 @@ TEST_F(Bake, ACancelledBakeWritesNothing)
 
 } // namespace
 } // namespace pvs
+
+namespace pvs::test {
+namespace {
+
+// `bake --method reference`: a lower bound within the portal-full bake of the same zone, and it
+// says that it can pop.
+TEST_F(BakeCommand, ReferenceIsALowerBoundOfPortalFullAndWarns)
+{
+    app::BakeOptions full = bake_generated({15, 4}, "full.s3d");
+    ASSERT_EQ(run(full), 0) << err_;
+    app::BakeOptions reference = full;
+    reference.output = path("reference.s3d");
+    reference.method = "reference";
+    reference.samples = 128;
+    ASSERT_EQ(run(reference), 0) << err_;
+    EXPECT_NE(err_.find("lower bound"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("lines per region"), std::string::npos) << "the rounds are reported: " << err_;
+    const Rows full_rows = rows_of(*load_s3d(full.output).baked_pvs);
+    const Rows reference_rows = rows_of(*load_s3d(reference.output).baked_pvs);
+    ASSERT_EQ(full_rows.size(), reference_rows.size());
+    size_t reference_bits = 0;
+    for (size_t r = 0; r < full_rows.size(); ++r)
+        for (size_t w = 0; w < full_rows[r].size(); ++w) {
+            EXPECT_EQ(reference_rows[r][w] & ~full_rows[r][w], 0u) << "row " << r;
+            reference_bits += size_t(std::popcount(reference_rows[r][w]));
+        }
+    EXPECT_GT(reference_bits, full_rows.size()) << "more than each region seeing itself";
+
+    reference.prt_in = path("none.prt");
+    EXPECT_EQ(run(reference), 2) << "--prt does not apply to the reference";
+}
+
+} // namespace
+} // namespace pvs::test

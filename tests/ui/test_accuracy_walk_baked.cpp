@@ -1,7 +1,7 @@
 // Image-space accuracy of pvscope's own PVS: on every Quake map in ../shared/data, portals
 // built from the map's tree (build_zone_portals, ericw's default sky rule), portal-full baked
-// (level 4), then 2000 seeded cameras in playable space (the same camera rules and the same
-// exact-ray confirmation as test_accuracy_walk.cpp, where the reasons are written down) culled
+// (level 4), then 2000 seeded cameras at 640x480 in playable space (the same camera rules and the same
+// sight-line confirmation through the tree as test_accuracy_walk.cpp, where the reasons are written down) culled
 // with pvs+frustum against the exact ID buffer of the whole zone: no pixel may pop. The bake is
 // the thing under test; the ID buffer and the ray casts do not use it.
 #include "tests/support/test_data.h"
@@ -33,9 +33,14 @@ TEST_P(BakedPvsWalk, PortalFullNeverPopsOver2000Cameras)
     ASSERT_FALSE(report.cancelled);
     ASSERT_GT(report.portals, 0u);
 
-    const std::vector<Camera> cameras = random_cameras_in_regions(zone, 2000, 2026, Camera{});
+    Camera lens;
+    lens.aspect = 640.0f / 480.0f;
+    const std::vector<Camera> cameras = random_cameras_in_regions(zone, 2000, 2026, lens);
     ASSERT_EQ(cameras.size(), 2000u);
-    const auto rows = run_accuracy_walk(zone, &baked, cameras, WalkOptions{});
+    WalkOptions options;
+    options.width = 640;
+    options.height = 480;
+    const auto rows = run_accuracy_walk(zone, &baked, cameras, options);
     uint64_t covered = 0, confirmed = 0, culled_regions = 0;
     for (size_t i = 0; i < rows.size(); ++i) {
         covered += rows[i].accuracy.covered_pixels;
@@ -47,7 +52,7 @@ TEST_P(BakedPvsWalk, PortalFullNeverPopsOver2000Cameras)
             << rows[i].camera.pitch_degrees << " region " << rows[i].cull.region;
     }
     EXPECT_EQ(confirmed, 0u);
-    EXPECT_GT(covered, 2000u * 320u * 240u / 2u); // the cameras really saw the level
+    EXPECT_GT(covered, 2000u * 640u * 480u / 2u); // the cameras really saw the level
     EXPECT_GT(culled_regions, 0u);                // and the PVS really culled something
 }
 

@@ -28,6 +28,22 @@ SightCheck::SightCheck(const Zone& zone, SkyPortals sky) : tracer_(zone.tree, zo
     }
 }
 
+// The four segments beside eye -> eye + length * direction, both ends moved kSightMargin across
+// the ray (up, down, left, right of it): all open?
+bool SightCheck::open_with_margin(const glm::dvec3& eye, const glm::dvec3& direction, double length,
+                                  TreeTracer::Scratch& scratch) const
+{
+    const glm::dvec3 helper = std::abs(direction.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 across1 = glm::normalize(glm::cross(direction, helper));
+    const glm::dvec3 across2 = glm::cross(direction, across1);
+    for (const glm::dvec3& offset : {across1, -across1, across2, -across2}) {
+        const glm::dvec3 from = eye + kSightMargin * offset;
+        if (tracer_.trace(from, direction, length, scratch, [](int32_t, double, double) {}).blocked)
+            return false;
+    }
+    return true;
+}
+
 SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face,
                                        TreeTracer::Scratch& scratch) const
 {
@@ -40,10 +56,13 @@ SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& 
     if (!(facing < 0.0) || !(t_hit > 0.0) || !std::isfinite(t_hit))
         return result;
     const double backoff = std::min({kSightBackoff / -facing, kSightBackoffMax, 0.5 * t_hit});
-    const TraceEnd end = tracer_.trace(eye, direction, t_hit - backoff, scratch, [](int32_t, double, double) {});
+    const double length = t_hit - backoff;
+    const TraceEnd end = tracer_.trace(eye, direction, length, scratch, [](int32_t, double, double) {});
     result.hit_distance = t_hit;
     result.sight = end.blocked ? Sight::Blocked : Sight::Open;
     result.end_region = end.blocked ? -1 : end.last_region;
+    if (result.sight == Sight::Open && !open_with_margin(eye, direction, length, scratch))
+        result.sight = Sight::Grazing;
     return result;
 }
 

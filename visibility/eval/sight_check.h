@@ -12,6 +12,12 @@
 // measured off the face's plane (at most kSightBackoffMax along the ray), because a face lies
 // on its leaf's boundary only to within its file's vertex noise (Quake: 0.1 units).
 //
+// Grazing: the segment is open, but one of four companions, the eye and the end moved by
+// kSightMargin across the ray, is blocked: the line passes within kSightMargin of a wall's edge
+// or corner (or touches it exactly, where the tree walk sends it round the corner). Such a line
+// is a real but hair-thin sight line, the kind portal vis drops by its epsilons (ON_EPSILON =
+// 0.1) and a raster shows as a lone pixel at a wall edge; it is counted apart, not confirmed.
+//
 // Unknown: the zone has no tree, the ray does not meet the face's plane in front of the eye
 // (a face seen edge-on, or a pixel centre just off its face), or the face has no area. Callers
 // count Unknown with the cracks: it is never confirmed.
@@ -33,8 +39,9 @@ namespace pvs {
 
 inline constexpr double kSightBackoff = 0.2;
 inline constexpr double kSightBackoffMax = 2.0;
+inline constexpr double kSightMargin = 0.05;
 
-enum class Sight : uint8_t { Open, Blocked, Unknown };
+enum class Sight : uint8_t { Open, Blocked, Grazing, Unknown };
 
 struct SightResult {
     Sight sight = Sight::Unknown;
@@ -52,6 +59,8 @@ public:
                                TreeTracer::Scratch& scratch) const;
 
 private:
+    bool open_with_margin(const glm::dvec3& eye, const glm::dvec3& direction, double length,
+                          TreeTracer::Scratch& scratch) const;
     struct FacePlane {
         glm::dvec3 normal{0.0};
         double dist = 0.0;

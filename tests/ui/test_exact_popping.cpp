@@ -1,0 +1,127 @@
+// Popping that cannot be fooled (ui/accuracy_walk.h): a raster pixel of a face the culler did not
+// draw counts as popping only when the sight line to it is open in the tree. Two hand-built zones
+// whose answers follow from their layout:
+//
+//   Wall: region 0 (x < 0) | solid slab (0 < x < 10) | region 1 (x > 10). The slab's face toward
+//   region 0 is two coplanar quads with a gap of 1 unit between them (a crack in the mesh, not in
+//   the tree); region 1's far wall at x = 100 shows through it. The true PVS has 0 and 1 apart,
+//   so every pixel of the far wall seen through the crack is raster popping and a crack, never
+//   confirmed popping.
+//   Open: the same planes with the slab open (region 1 spans x > 0), no wall faces: 0 sees 1.
+//   With the bit 0 -> 1 removed from a full PVS, the far wall pops, confirmed, in region 1.
+#include "ui/accuracy_walk.h"
+
+#include "visibility/bit_row.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace pvs::ui {
+namespace {
+
+void add_quad(Zone& zone, glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d)
+{
+    Mesh& mesh = zone.mesh;
+    const uint32_t first = uint32_t(mesh.positions.size());
+    for (const glm::vec3& p : {a, b, c, d}) {
+        mesh.positions.push_back(p);
+        mesh.uvs.push_back({0.0f, 0.0f});
+    }
+    mesh.faces.push_back({uint32_t(mesh.indices.size() / 3), 2, 0});
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+        mesh.indices.push_back(first + i);
+}
+
+// x = const quad facing -x (toward a camera at smaller x), y in [y0, y1], z in [-50, 50].
+void add_wall(Zone& zone, float x, float y0, float y1)
+{
+    add_quad(zone, {x, y1, -50}, {x, y0, -50}, {x, y0, 50}, {x, y1, 50});
+}
+
+Zone two_rooms(bool wall)
+{
+    Zone zone;
+    zone.materials.push_back(Material{"grey", 0, 0, {}, 0});
+    zone.regions.resize(2);
+    zone.regions[0].bounds = {{-100, -50, -50}, {0, 50, 50}};
+    zone.regions[1].bounds = {{wall ? 10.0f : 0.0f, -50, -50}, {100, 50, 50}};
+    // Node 0: x = 0, front (x > 0) node 1, back region 0. Node 1: x = 10, front region 1,
+    // back the slab: solid with a wall, region 1 without.
+    zone.tree.nodes = {{{1, 0, 0}, 0.0f, {1, ~0}}, {{1, 0, 0}, 10.0f, {~1, ~2}}};
+    zone.tree.leaf_region = {0, 1, wall ? kLeafSolid : 1};
+    zone.tree.root = 0;
+    std::vector<std::vector<uint32_t>> faces(2);
+    if (wall) {
+        add_wall(zone, 0.0f, -50.0f, -0.5f); // face 0: the slab's face, below the crack
+        add_wall(zone, 0.0f, 0.5f, 50.0f);   // face 1: above it
+        faces[0] = {0, 1};
+    }
+    faces[1].push_back(uint32_t(zone.mesh.faces.size()));
+    add_wall(zone, 100.0f, -50.0f, 50.0f); // region 1's far wall
+    zone.region_face_offsets = {0, uint32_t(faces[0].size()), uint32_t(faces[0].size() + faces[1].size())};
+    zone.region_faces = faces[0];
+    zone.region_faces.insert(zone.region_faces.end(), faces[1].begin(), faces[1].end());
+    return zone;
+}
+
+// Rows given as "region r sees these".
+Pvs pvs_of(const std::vector<std::vector<uint32_t>>& rows)
+{
+    return Pvs::build(uint32_t(rows.size()), [&](uint32_t r, std::span<uint64_t> row) {
+        for (uint32_t c : rows[r])
+            bits::set(row, c);
+        return true;
+    });
+}
+
+Camera camera_facing_the_wall()
+{
+    Camera camera;
+    camera.position = {-40.0f, 0.0f, 0.0f};
+    camera.yaw_degrees = 0.0f; // looking +x
+    camera.fov_y_degrees = 60.0f;
+    return camera;
+}
+
+WalkOptions options_640x480()
+{
+    WalkOptions options;
+    options.width = 640;
+    options.height = 480;
+    return options;
+}
+
+TEST(ExactPopping, ACrackInTheMeshIsNotPopping)
+{
+    const Zone zone = two_rooms(true);
+    const Pvs apart = pvs_of({{0}, {1}});
+    const std::vector<Camera> cameras{camera_facing_the_wall()};
+    const std::vector<WalkRow> rows = run_accuracy_walk(zone, &apart, cameras, options_640x480());
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_EQ(rows[0].cull.region, 0);
+    EXPECT_GT(rows[0].accuracy.popping_pixels, 100u) << "the far wall shows through the 1-unit crack";
+    EXPECT_EQ(rows[0].popping_confirmed, 0u) << "the slab is solid in the tree: no sight line is open";
+    EXPECT_EQ(rows[0].popping_cracks, rows[0].accuracy.popping_pixels);
+    EXPECT_TRUE(rows[0].confirmed_regions.empty());
+}
+
+TEST(ExactPopping, ARemovedBitPopsConfirmedWithItsRegion)
+{
+    const Zone zone = two_rooms(false);
+    const std::vector<Camera> cameras{camera_facing_the_wall()};
+    const Pvs full = pvs_of({{0, 1}, {0, 1}});
+    const std::vector<WalkRow> kept = run_accuracy_walk(zone, &full, cameras, options_640x480());
+    ASSERT_EQ(kept.size(), 1u);
+    EXPECT_GT(kept[0].accuracy.covered_pixels, 50000u) << "the far wall fills much of the view";
+    EXPECT_EQ(kept[0].accuracy.popping_pixels, 0u);
+
+    const Pvs removed = pvs_of({{0}, {0, 1}}); // 0 no longer sees 1
+    const std::vector<WalkRow> rows = run_accuracy_walk(zone, &removed, cameras, options_640x480());
+    EXPECT_EQ(rows[0].popping_confirmed, kept[0].accuracy.covered_pixels) << "every pixel of the far wall pops";
+    EXPECT_EQ(rows[0].popping_cracks, 0u);
+    EXPECT_EQ(rows[0].confirmed_regions, std::vector<uint32_t>{1});
+}
+
+} // namespace
+} // namespace pvs::ui

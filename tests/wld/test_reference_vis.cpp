@@ -1,0 +1,186 @@
+// The sampled reference (visibility/reference/reference_vis.h) against answers made elsewhere:
+// the visdemo rows derived by hand (tests/support/visdemo_rows.h), the PVS id's and WVis's vis
+// tools stored in the shared Quake maps, and pvscope's portal vis, which must hold it from above
+// (reference ⊆ portal-full ⊆ portal-fast on every row). A lower bound never holds a pair that is
+// not truly visible, so every bit it finds beyond an upper bound is a bug of one or the other.
+#include "visibility/reference/reference_vis.h"
+
+#include "tests/support/test_data.h"
+#include "tests/support/visdemo_rows.h"
+#include "visibility/bit_row.h"
+#include "visibility/eval/pvs_gap.h"
+#include "visibility/portal/portal_vis.h"
+#include "visibility/portal/portalize.h"
+#include "wld/gen/generate_zone.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pvs {
+namespace {
+
+std::vector<uint32_t> row_members(const Pvs& pvs, uint32_t r)
+{
+    std::vector<uint64_t> row(pvs.words_per_row());
+    pvs.decode_row(r, row);
+    std::vector<uint32_t> out;
+    for (uint32_t c = 0; c < pvs.region_count(); ++c)
+        if (bits::test(row, c))
+            out.push_back(c);
+    return out;
+}
+
+Pvs reference(const Zone& zone, uint64_t samples, SkyPortals sky, unsigned threads = 2, uint64_t seed = 1,
+              ReferenceReport* report = nullptr)
+{
+    ReferenceParams params;
+    params.max_samples = samples;
+    params.converge_share = 0.0;
+    params.sky = sky;
+    params.threads = threads;
+    params.seed = seed;
+    return bake_reference_vis(zone, params, report);
+}
+
+Pvs portal(const Zone& zone, VisParams::Method method, SkyPortals sky)
+{
+    PortalOptions options;
+    options.sky = sky;
+    VisParams params;
+    params.method = method;
+    params.threads = 2;
+    return bake_portal_vis(build_zone_portals(zone, options), uint32_t(zone.region_count()), params);
+}
+
+// Every bit of `inner` is in `outer`, and the pvs is symmetric (a sight line runs both ways).
+void expect_within(const Pvs& inner, const Pvs* outer, const std::string& what)
+{
+    const PvsGap gap = pvs_gap(outer, inner); // inner is the "reference": its bits outer lacks
+    EXPECT_EQ(gap.missing_bits, 0u) << what << ": " << gap.rows_missing_bits << " rows";
+}
+
+TEST(ReferenceVis, VisdemoFindsExactlyTheHandDerivedPairs)
+{
+    SHARED_DATA_OR_SKIP(path, "visdemo/example.bsp");
+    const Zone& zone = *test::shared_zone("visdemo/example.bsp");
+    ASSERT_EQ(zone.region_count(), 11u);
+    ReferenceReport report;
+    const Pvs ref = reference(zone, 4096, SkyPortals::SkyToSky, 2, 1, &report);
+    size_t found = 0, expected = 0;
+    for (uint32_t r = 0; r < 11; ++r) {
+        const std::vector<uint32_t> got = row_members(ref, r);
+        const std::vector<uint32_t>& want = test::kExampleExpected[r];
+        expected += want.size();
+        for (uint32_t c : got) {
+            EXPECT_TRUE(std::find(want.begin(), want.end(), c) != want.end())
+                << "the reference sees " << c << " from " << r << ", which the layout rules out";
+            ++found;
+        }
+    }
+    std::printf("[ visdemo ] reference: %zu of the %zu hand-derived pairs after %llu lines\n", found, expected,
+                static_cast<unsigned long long>(report.rays));
+    // Even the sight lines with margins of about a unit (0 and 10, slope 0.08) are found.
+    EXPECT_EQ(found, expected);
+}
+
+class ReferenceQuake : public testing::TestWithParam<std::string> {};
+
+// Sky None: the content rule id's maps were vised with (sky opaque), so the file's PVS is an upper
+// bound too.
+TEST_P(ReferenceQuake, LowerBoundUnderPortalFullUnderPortalFastAndTheFile)
+{
+    SHARED_DATA_OR_SKIP(path, GetParam());
+    const Zone& zone = *test::shared_zone(GetParam());
+    ReferenceReport report;
+    const Pvs ref = reference(zone, 128, SkyPortals::None, 2, 1, &report);
+    const Pvs full = portal(zone, VisParams::Method::Full, SkyPortals::None);
+    const Pvs fast = portal(zone, VisParams::Method::Fast, SkyPortals::None);
+    expect_within(ref, &full, "reference within portal-full");
+    expect_within(full, &fast, "portal-full within portal-fast");
+    ASSERT_TRUE(zone.baked_pvs.has_value());
+    expect_within(ref, &*zone.baked_pvs, "reference within the file's PVS");
+    for (uint32_t r = 0; r < ref.region_count(); r += 7)
+        for (uint32_t c : row_members(ref, r))
+            ASSERT_TRUE(ref.visible(c, r)) << r << " sees " << c << " but not back";
+    const PvsGap gap = pvs_gap(&full, ref);
+    std::printf("[ %s ] reference %llu bits in %.2f s, portal-full %llu (+%llu)\n", GetParam().c_str(),
+                static_cast<unsigned long long>(gap.reference_bits), report.seconds,
+                static_cast<unsigned long long>(gap.bits), static_cast<unsigned long long>(gap.excess_bits));
+    EXPECT_GT(gap.reference_bits, gap.bits * 8 / 10) << "128 lines per region find most of the PVS";
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedMaps, ReferenceQuake,
+                         testing::Values("quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/start.bsp",
+                                         "quake/end.bsp", "quake/dm2.bsp"),
+                         [](const testing::TestParamInfo<std::string>& param) { return test::param_name(param.param); });
+
+TEST(ReferenceVis, GeneratedZoneLowerBoundAndDeterministic)
+{
+    const Zone zone = gen::generate_zone({30, 7});
+    const Pvs one = reference(zone, 256, SkyPortals::SkyToSky, 1, 3);
+    const Pvs two = reference(zone, 256, SkyPortals::SkyToSky, 2, 3);
+    const Pvs other_seed = reference(zone, 256, SkyPortals::SkyToSky, 2, 4);
+    const Pvs full = portal(zone, VisParams::Method::Full, SkyPortals::SkyToSky);
+    const Pvs fast = portal(zone, VisParams::Method::Fast, SkyPortals::SkyToSky);
+    for (uint32_t r = 0; r < one.region_count(); ++r)
+        ASSERT_EQ(row_members(one, r), row_members(two, r)) << "row " << r << ": 1 and 2 threads differ";
+    expect_within(one, &full, "reference within portal-full");
+    expect_within(other_seed, &full, "another seed's reference within portal-full");
+    expect_within(full, &fast, "portal-full within portal-fast");
+    EXPECT_NE(pvs_gap(&one, other_seed).missing_bits + pvs_gap(&other_seed, one).missing_bits, 0u)
+        << "another seed traces other lines (a test that the seed is used)";
+}
+
+TEST(ReferenceVis, RoundsDoubleAndReportTheirBits)
+{
+    const Zone zone = gen::generate_zone({20, 2});
+    ReferenceReport report;
+    std::vector<uint64_t> seen_bits;
+    ReferenceParams params;
+    params.initial_samples = 16;
+    params.max_samples = 256;
+    params.converge_share = 0.0;
+    params.on_round = [&](const ReferenceRound& round, const Pvs& rows) {
+        seen_bits.push_back(pvs_gap(&rows, rows).bits);
+        EXPECT_EQ(seen_bits.back(), round.bits);
+    };
+    const Pvs pvs = bake_reference_vis(zone, params, &report);
+    ASSERT_EQ(report.rounds.size(), 5u); // 16, 32, 64, 128, 256
+    uint64_t total = zone.region_count(); // every region sees itself before any line is traced
+    for (size_t k = 0; k < report.rounds.size(); ++k) {
+        EXPECT_EQ(report.rounds[k].samples_per_region, 16u << k);
+        total += report.rounds[k].new_bits;
+        EXPECT_EQ(report.rounds[k].bits, total);
+    }
+    EXPECT_EQ(pvs_gap(&pvs, pvs).bits, total);
+    EXPECT_FALSE(report.converged);
+    EXPECT_FALSE(report.cancelled);
+}
+
+TEST(ReferenceVis, CancelKeepsALowerBound)
+{
+    const Zone zone = gen::generate_zone({20, 2});
+    ReferenceParams params;
+    params.max_samples = 1024;
+    int calls = 0;
+    params.progress = [&](double) { return ++calls < 2; };
+    ReferenceReport report;
+    const Pvs cancelled = bake_reference_vis(zone, params, &report);
+    EXPECT_TRUE(report.cancelled);
+    const Pvs full = portal(zone, VisParams::Method::Full, SkyPortals::SkyToSky);
+    expect_within(cancelled, &full, "a cancelled reference within portal-full");
+}
+
+TEST(ReferenceVis, AZoneWithoutATreeIsRefused)
+{
+    Zone zone;
+    zone.regions.resize(2);
+    EXPECT_THROW(bake_reference_vis(zone, ReferenceParams{}), std::invalid_argument);
+}
+
+} // namespace
+} // namespace pvs
