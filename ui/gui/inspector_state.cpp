@@ -126,6 +126,7 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     // The bake, the culler and the renderer's scene borrow the old zone: stop and drop them
     // before it goes.
     bake_.stop();
+    compare_.stop();
     culler_.reset();
     if (renderer_)
         renderer_->forget_zone();
@@ -263,6 +264,7 @@ const CullStats& InspectorState::frame()
         cull_ = view_;
 
     poll_bake();
+    compare_.poll();
     last_cull_ = culler_->cull(cull_, {cull_mode, true}, visible_);
     update_after_pvs();
     try {

@@ -24,6 +24,7 @@
 #pragma once
 
 #include "ui/gui/bake_job.h"
+#include "ui/gui/compare_job.h"
 #include "ui/gui/frame_history.h"
 #include "ui/software_renderer.h"
 #include "ui/zone_overlays.h"
@@ -180,6 +181,15 @@ public:
     // culler's source already, the culler switches to the new one.
     void poll_bake();
     const std::optional<Pvs>& baked_pvs() const { return baked_pvs_; }
+
+    // The Compare panel's job (compare_job.h) over the open zone, and its rows as PVS sources:
+    // use_compared_pvs(i) makes row i's PVS the "baked" source and switches to it (a row with no
+    // PVS, "none", switches to None). False when there is no such row.
+    CompareJob& compare_job() { return compare_; }
+    const CompareJob& compare_job() const { return compare_; }
+    bool start_compare(const ui::CompareOptions& options);
+    bool use_compared_pvs(size_t row);
+    const std::string& baked_label() const { return baked_label_; }
     const VisReport& baked_report() const { return baked_report_; }
 
     // ---- Selection -----------------------------------------------------------------------------
@@ -241,6 +251,8 @@ private:
 
     PvsSource pvs_source_ = PvsSource::None;
     std::optional<Pvs> baked_pvs_;
+    std::string baked_label_; // what the "baked" source holds: "portal-full level=4 ...", a compare row
+    CompareJob compare_;
     VisReport baked_report_;
     uint64_t pvs_generation_ = 0;
     BakeJob bake_; // last: destroyed (stopped) first, before the zone it reads

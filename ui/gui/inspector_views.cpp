@@ -157,11 +157,32 @@ bool InspectorState::start_bake(const BakeRequest& request)
     return zone_ && bake_.start(*zone_, request);
 }
 
+bool InspectorState::start_compare(const ui::CompareOptions& options)
+{
+    return zone_ && compare_.start(*zone_, options);
+}
+
+bool InspectorState::use_compared_pvs(size_t row)
+{
+    const std::optional<ui::CompareResult>& result = compare_.result();
+    if (!zone_ || !result || row >= result->rows.size())
+        return false;
+    const ui::CompareRow& chosen = result->rows[row];
+    if (!chosen.pvs)
+        return set_pvs_source(PvsSource::None);
+    baked_pvs_ = *chosen.pvs;
+    baked_label_ = chosen.method + (chosen.params.empty() ? "" : " " + chosen.params);
+    pvs_source_ = PvsSource::Baked;
+    rebuild_culler();
+    return true;
+}
+
 void InspectorState::poll_bake()
 {
     if (bake_.status() != BakeStatus::Running || bake_.poll() != BakeStatus::Done)
         return;
     baked_pvs_ = bake_.take_result();
+    baked_label_ = bake_.request().method == VisParams::Method::Fast ? "portal-fast" : "portal-full";
     baked_report_ = bake_.report();
     ++pvs_generation_;
     if (pvs_source_ == PvsSource::Baked)

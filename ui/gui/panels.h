@@ -87,6 +87,13 @@ struct BakePanel {
 };
 void draw_bake_panel(InspectorState& state, BakePanel& panel);
 
+// ---- Compare: every method against the reference, the chart, a click culls with a method --------
+struct ComparePanel {
+    int reference_samples = 512; // the reference's lines per region
+    int cameras = 100;           // the walk's cameras (popping and overdraw)
+};
+void draw_compare_panel(InspectorState& state, ComparePanel& panel);
+
 // ---- File menu (main menu bar): open through a file browser, recent files, the viewport PNG ---
 // Load errors open a modal that names the file and the problem; nothing here throws.
 struct FileMenu {
@@ -124,6 +131,7 @@ struct InspectorPanels {
     RegionPanel region;
     BspPanel bsp;
     BakePanel bake;
+    ComparePanel compare;
     FileMenu file;
     ImVec2 laid_out_for{0.0f, 0.0f}; // the display size of the last tiling
 };
