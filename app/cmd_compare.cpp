@@ -4,6 +4,7 @@
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "ui/chart/chart_png.h"
+#include "ui/chart/compare_points.h"
 #include "ui/chart/svg_canvas.h"
 #include "ui/method_compare.h"
 #include "visibility/file_error.h"
@@ -83,29 +84,6 @@ nlohmann::json json_report(const CompareCommandOptions& o, const Zone& zone, con
             {"methods", rows}};
 }
 
-std::vector<ui::chart::ChartPoint> chart_points(const ui::CompareResult& result)
-{
-    std::vector<ui::chart::ChartPoint> points;
-    for (const ui::CompareRow& r : result.rows) {
-        ui::chart::ChartPoint p;
-        p.method = r.method;
-        p.label = r.method;
-        if (r.method == "portal-full" || r.method == "clustered") {
-            // Short labels: "L2", "L4 -passages", "L4 -checks".
-            const bool passages = r.params.find("passages=off") == std::string::npos;
-            const bool checks = r.params.find("target-checks=off") == std::string::npos;
-            const size_t level = r.params.find("level=");
-            p.label += " L" + r.params.substr(level + 6, 1) + (passages ? "" : " -passages") + (checks ? "" : " -checks");
-        } else if (r.method == "reference")
-            p.label += " " + r.params.substr(r.params.find('=') + 1, r.params.find(' ') - r.params.find('=') - 1);
-        p.seconds = r.baked ? r.wall_s : 0.0;
-        p.missing_bits = double(r.missing_bits);
-        p.excess_bits = double(r.excess_bits);
-        points.push_back(p);
-    }
-    return points;
-}
-
 void write_text(const std::string& path, const std::string& text)
 {
     write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
@@ -113,7 +91,7 @@ void write_text(const std::string& path, const std::string& text)
 
 void write_chart(const std::string& path, const std::string& title, const ui::CompareResult& result)
 {
-    const std::vector<ui::chart::ChartPoint> points = chart_points(result);
+    const std::vector<ui::chart::ChartPoint> points = ui::chart::compare_chart_points(result);
     constexpr uint32_t kWidth = 1200, kHeight = 560;
     if (std::filesystem::path(path).extension() == ".svg") {
         ui::chart::SvgCanvas svg(kWidth, kHeight);

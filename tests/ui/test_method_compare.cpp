@@ -3,6 +3,7 @@
 // reference's last round is the reference, `none` exceeds it by exactly the pairs it lacks —
 // and the chart module (ui/chart/) on known inputs.
 #include "ui/chart/chart_png.h"
+#include "ui/chart/compare_points.h"
 #include "ui/chart/speed_accuracy_chart.h"
 #include "ui/chart/svg_canvas.h"
 #include "ui/method_compare.h"
@@ -105,6 +106,34 @@ TEST(Chart, PngShowsThePointsInTheirColoursAndText)
     }
     EXPECT_GT(dark, 500u);
     EXPECT_GT(blue, 40u);
+}
+
+TEST(Chart, CompareRowsBecomeShortLabelledPoints)
+{
+    CompareResult result;
+    auto row = [&](std::string method, std::string params, bool baked, double seconds) {
+        CompareRow r;
+        r.method = std::move(method);
+        r.params = std::move(params);
+        r.baked = baked;
+        r.wall_s = seconds;
+        r.missing_bits = 3;
+        r.excess_bits = 4;
+        result.rows.push_back(std::move(r));
+    };
+    row("reference", "samples=1024 seed=1", true, 2.0);
+    row("portal-full", "level=4 passages=off target-checks=on", true, 1.0);
+    row("clustered", "level=2 passages=on target-checks=off", true, 1.0);
+    row("file", "", false, 5.0);
+    const std::vector<chart::ChartPoint> points = chart::compare_chart_points(result);
+    ASSERT_EQ(points.size(), 4u);
+    EXPECT_EQ(points[0].label, "reference 1024");
+    EXPECT_EQ(points[1].label, "portal-full L4 -passages");
+    EXPECT_EQ(points[2].label, "clustered L2 -checks");
+    EXPECT_EQ(points[3].label, "file");
+    EXPECT_EQ(points[3].seconds, 0.0) << "nothing baked: the stored column";
+    EXPECT_EQ(points[0].missing_bits, 3.0);
+    EXPECT_EQ(points[0].excess_bits, 4.0);
 }
 
 } // namespace

@@ -11,11 +11,15 @@
 #include "visibility/eval/pvs_gap.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
+#include "visibility/reference/line_witness.h"
+#include "visibility/reference/tree_trace.h"
 #include "wld/gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -173,6 +177,32 @@ TEST(ReferenceVis, CancelKeepsALowerBound)
     EXPECT_TRUE(report.cancelled);
     const Pvs full = portal(zone, VisParams::Method::Full, SkyPortals::SkyToSky);
     expect_within(cancelled, &full, "a cancelled reference within portal-full");
+}
+
+// Found on end.bsp at 2048 lines per region: a frontier line that crosses from region 75 into
+// region 73 0.0007 units from the wall x = -1024, where the two rooms meet only in a sliver the
+// portal builder has no portal for (not even portal-fast holds the pair). The line's stretch holds
+// both regions; the pair must not be witnessed, since the line is not open as a beam.
+TEST(ReferenceVis, ALineGrazingAWallDoesNotWitnessItsPair)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/end.bsp");
+    const Zone& zone = *test::shared_zone("quake/end.bsp");
+    const TreeTracer tracer(zone.tree, zone.regions, SkyPortals::None);
+    const glm::dvec3 point(-1021.15447, 1568.0, 73.97141);
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(0.0388553, 0.9831595, 0.1785712));
+    TreeTracer::Scratch scratch;
+    Stretch stretch;
+    ASSERT_TRUE(open_stretch(tracer, point, direction, 1e5, scratch, stretch));
+    const auto has = [&](uint32_t r) {
+        return std::find(stretch.regions.begin(), stretch.regions.end(), r) != stretch.regions.end();
+    };
+    ASSERT_TRUE(has(73) && has(75)) << "the line still grazes from 75 into 73";
+    WitnessRows rows(uint32_t(zone.region_count()));
+    const uint64_t set = witness_pairs(tracer, point, direction, stretch, rows, scratch);
+    EXPECT_FALSE(rows.test(73, 75));
+    EXPECT_FALSE(rows.test(75, 73));
+    EXPECT_TRUE(rows.test(73, 40)) << "its open part, well clear of walls, still witnesses";
+    EXPECT_GT(set, 0u);
 }
 
 TEST(ReferenceVis, AZoneWithoutATreeIsRefused)

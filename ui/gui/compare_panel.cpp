@@ -1,6 +1,7 @@
 // The Compare panel: `pvscope compare` over the open zone on a background thread (CompareJob),
 // its speed-vs-accuracy chart drawn by the same module as the CLI's PNG (ui/chart/), and a click
 // on a point (or a row of the table) culls with that method's PVS (InspectorState::use_compared_pvs).
+#include "ui/chart/compare_points.h"
 #include "ui/chart/imgui_canvas.h"
 #include "ui/chart/speed_accuracy_chart.h"
 #include "ui/gui/panels.h"
@@ -43,18 +44,9 @@ void draw_request(InspectorState& state, ComparePanel& panel)
         ImGui::TextUnformatted("compare cancelled");
 }
 
-std::vector<ui::chart::ChartPoint> chart_points(const ui::CompareResult& result)
-{
-    std::vector<ui::chart::ChartPoint> points;
-    for (const ui::CompareRow& r : result.rows)
-        points.push_back({r.method + (r.method == "portal-full" ? " L" + r.params.substr(6, 1) : ""), r.method,
-                          r.baked ? r.wall_s : 0.0, double(r.missing_bits), double(r.excess_bits)});
-    return points;
-}
-
 void draw_chart(InspectorState& state, const ui::CompareResult& result)
 {
-    const std::vector<ui::chart::ChartPoint> points = chart_points(result);
+    const std::vector<ui::chart::ChartPoint> points = ui::chart::compare_chart_points(result);
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, 200.0f), kChartHeight);
     ui::chart::ImguiCanvas canvas(ImGui::GetWindowDrawList(), ImGui::GetFont(), ImGui::GetFontSize());

@@ -28,22 +28,6 @@ SightCheck::SightCheck(const Zone& zone, SkyPortals sky) : tracer_(zone.tree, zo
     }
 }
 
-// The four segments beside eye -> eye + length * direction, both ends moved kSightMargin across
-// the ray (up, down, left, right of it): all open?
-bool SightCheck::open_with_margin(const glm::dvec3& eye, const glm::dvec3& direction, double length,
-                                  TreeTracer::Scratch& scratch) const
-{
-    const glm::dvec3 helper = std::abs(direction.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
-    const glm::dvec3 across1 = glm::normalize(glm::cross(direction, helper));
-    const glm::dvec3 across2 = glm::cross(direction, across1);
-    for (const glm::dvec3& offset : {across1, -across1, across2, -across2}) {
-        const glm::dvec3 from = eye + kSightMargin * offset;
-        if (tracer_.trace(from, direction, length, scratch, [](int32_t, double, double) {}).blocked)
-            return false;
-    }
-    return true;
-}
-
 SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face,
                                        TreeTracer::Scratch& scratch) const
 {
@@ -61,7 +45,7 @@ SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& 
     result.hit_distance = t_hit;
     result.sight = end.blocked ? Sight::Blocked : Sight::Open;
     result.end_region = end.blocked ? -1 : end.last_region;
-    if (result.sight == Sight::Open && !open_with_margin(eye, direction, length, scratch))
+    if (result.sight == Sight::Open && !tracer_.open_beam(eye, direction, length, kSightMargin, scratch))
         result.sight = Sight::Grazing;
     return result;
 }

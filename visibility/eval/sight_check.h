@@ -12,8 +12,8 @@
 // measured off the face's plane (at most kSightBackoffMax along the ray), because a face lies
 // on its leaf's boundary only to within its file's vertex noise (Quake: 0.1 units).
 //
-// Grazing: the segment is open, but one of four companions, the eye and the end moved by
-// kSightMargin across the ray, is blocked: the line passes within kSightMargin of a wall's edge
+// Grazing: the segment is open, but not as a beam (TreeTracer::open_beam: one of four
+// companions, moved by kSightMargin across the ray, is blocked): the line passes within kSightMargin of a wall's edge
 // or corner (or touches it exactly, where the tree walk sends it round the corner). Such a line
 // is a real but hair-thin sight line, the kind portal vis drops by its epsilons (ON_EPSILON =
 // 0.1) and a raster shows as a lone pixel at a wall edge; it is counted apart, not confirmed.
@@ -39,7 +39,7 @@ namespace pvs {
 
 inline constexpr double kSightBackoff = 0.2;
 inline constexpr double kSightBackoffMax = 2.0;
-inline constexpr double kSightMargin = 0.05;
+inline constexpr double kSightMargin = kBeamMargin; // the reference's margin (tree_trace.h)
 
 enum class Sight : uint8_t { Open, Blocked, Grazing, Unknown };
 
@@ -59,8 +59,6 @@ public:
                                TreeTracer::Scratch& scratch) const;
 
 private:
-    bool open_with_margin(const glm::dvec3& eye, const glm::dvec3& direction, double length,
-                          TreeTracer::Scratch& scratch) const;
     struct FacePlane {
         glm::dvec3 normal{0.0};
         double dist = 0.0;

@@ -61,7 +61,7 @@ void prove(Shared& s, const glm::dvec3& point, const glm::dvec3& direction, Scra
 {
     scratch.stretch.regions.clear();
     if (open_stretch(s.tracer, point, direction, s.reach, scratch.trace, scratch.stretch))
-        s.rows.set_all_pairs(scratch.stretch.regions, s.before);
+        witness_pairs(s.tracer, point, direction, scratch.stretch, s.rows, scratch.trace);
 }
 
 // Lines [first, end) of region r's volume stream: through a uniform point of r's volume, in a

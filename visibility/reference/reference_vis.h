@@ -13,9 +13,10 @@
 //
 // What a ray proves. Every region the ray passes through is visible from A, and more: any two
 // regions X and Y on its open stretch see each other, since the part of the ray between them is
-// itself such a segment (and the content rule is symmetric). So a ray crossing k regions sets the
-// k x k pairs among them, rows and columns alike. Every bit set is witnessed by a segment through
-// open space: the result is a LOWER bound of the true PVS (what a PVS must contain not to pop),
+// itself such a segment (and the content rule is symmetric). So a ray crossing k regions may set
+// the k x k pairs among them, rows and columns alike; a pair is set only when its segment is open
+// as a beam kBeamMargin wide (line_witness.h: lines that only graze a corner or slip through a
+// sub-epsilon gap prove nothing). Every bit set is witnessed by a segment through open space: the result is a LOWER bound of the true PVS (what a PVS must contain not to pop),
 // where a conservative portal vis is an upper bound. Symmetric by construction.
 //
 // Frontier lines. Volume lines find wide openings quickly and narrow ones (a sight line through two

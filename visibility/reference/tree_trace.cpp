@@ -1,6 +1,26 @@
 #include "visibility/reference/tree_trace.h"
 
+#include <cmath>
+#include <glm/geometric.hpp>
+
 namespace pvs {
+
+bool TreeTracer::open_beam(const glm::dvec3& from, const glm::dvec3& direction, double length, double margin,
+                           Scratch& scratch) const
+{
+    auto open = [&](const glm::dvec3& start) {
+        return !trace(start, direction, length, scratch, [](int32_t, double, double) {}).blocked;
+    };
+    if (!open(from))
+        return false;
+    const glm::dvec3 helper = std::abs(direction.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 across1 = glm::normalize(glm::cross(direction, helper));
+    const glm::dvec3 across2 = glm::cross(direction, across1);
+    for (const glm::dvec3& offset : {across1, -across1, across2, -across2})
+        if (!open(from + margin * offset))
+            return false;
+    return true;
+}
 
 TreeTracer::TreeTracer(const BspTree& tree, const std::vector<Region>& regions, SkyPortals sky)
     : leaf_region_(tree.leaf_region), ties_go_front_(tree.tie_rule == TieRule::OnPlaneGoesFront), sky_(sky)

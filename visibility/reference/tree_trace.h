@@ -38,6 +38,10 @@
 
 namespace pvs {
 
+// The margin of open_beam() that the reference and the popping check use (zone units): half
+// Quake vis's ON_EPSILON.
+inline constexpr double kBeamMargin = 0.05;
+
 struct TraceEnd {
     double t = 0.0;       // where the walk stopped: t_end, or the entry of the leaf that blocked it
     bool blocked = false; // stopped by a leaf it cannot see into (not by reaching t_end)
@@ -64,6 +68,15 @@ public:
     template <class Visit>
     TraceEnd trace(const glm::dvec3& origin, const glm::dvec3& direction, double t_end, Scratch& stack,
                    Visit&& visit) const;
+
+    // Whether the segment from `from` along the unit `direction` for `length` is open and stays
+    // open when moved by `margin` across itself (four companions: up, down, left and right of
+    // it, both ends moved alike). A line that is open only because it passes a wall's edge or
+    // corner by less than the margin, or through a gap narrower than it, is not: such hair-thin
+    // lines are real in exact geometry but are what every vis tool drops by its epsilon and what
+    // a viewer sees at most as a sparkle. Both the reference and the popping check ask this.
+    bool open_beam(const glm::dvec3& from, const glm::dvec3& direction, double length, double margin,
+                   Scratch& scratch) const;
 
     // The region holding `point` (the tree's TieRule on planes, as locate_point, but in double),
     // or kLeafSolid / kLeafOutside; kLeafSolid without a tree or for a corrupt leaf.
