@@ -1,5 +1,10 @@
 #include "app/arguments.h"
 
+#include "visibility/file_error.h"
+#include "wld/common/read_file.h"
+
+#include <sstream>
+
 #include <charconv>
 #include <cmath>
 #include <string_view>
@@ -45,6 +50,38 @@ std::optional<std::array<uint32_t, 2>> parse_size_argument(const std::string& te
     if (size[0] == 0 || size[1] == 0 || size[0] > 8192 || size[1] > 8192)
         return std::nullopt;
     return size;
+}
+
+std::vector<std::string> split_comma_list(const std::string& text)
+{
+    std::vector<std::string> items;
+    std::stringstream in(text);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            items.push_back(item);
+    return items;
+}
+
+void write_text_file(const std::string& path, const std::string& text)
+{
+    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
+
+SkyPortals sky_mode_from_name(const std::string& name)
+{
+    return name == "all" ? SkyPortals::All : name == "none" ? SkyPortals::None : SkyPortals::SkyToSky;
+}
+
+int run_reporting_errors(const std::string& input, std::FILE* err, const std::function<int()>& body)
+{
+    try {
+        return body();
+    } catch (const FileError& e) {
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+    } catch (const std::exception& e) { // a zone without a tree, a result that cannot be written
+        std::fprintf(err, "pvscope: error: %s: %s\n", input.c_str(), e.what());
+    }
+    return kExitFileError;
 }
 
 } // namespace pvs::app

@@ -1,5 +1,6 @@
 #include "app/cmd_bake.h"
 
+#include "app/arguments.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "visibility/bit_row.h"
@@ -36,10 +37,6 @@
 namespace pvs::app {
 
 namespace {
-
-constexpr int kExitFileError = 1;
-constexpr int kExitBadArguments = 2;
-constexpr int kExitCancelled = 130; // 128 + SIGINT, what a shell reports for Ctrl-C
 
 enum class InputFormat { QuakeBsp, EqS3d };
 
@@ -126,11 +123,6 @@ quake::PrtFile load_prt_for_zone(const std::string& prt_path, const Zone& zone, 
                             std::to_string(zone.region_count()) +
                             " regions (PRT leaf k must be region k: a portal file of another map?)");
     return prt;
-}
-
-SkyPortals sky_mode(const std::string& name)
-{
-    return name == "all" ? SkyPortals::All : name == "none" ? SkyPortals::None : SkyPortals::SkyToSky;
 }
 
 // Row-by-row comparison of the bake with the PVS the file had (missing rows: all visible).
@@ -260,7 +252,7 @@ void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FIL
         }
     } else {
         PortalOptions options;
-        options.sky = sky_mode(o.sky);
+        options.sky = sky_mode_from_name(o.sky);
         run.portal_stats.emplace();
         run.portals = build_zone_portals(zone, options, &*run.portal_stats);
         // Only the world box: an EverQuest zone's walls are region-less (outside) leaves, so
@@ -322,7 +314,7 @@ bool bake(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err, 
 MethodSettings method_settings(const BakeOptions& o)
 {
     MethodSettings settings;
-    settings.sky = sky_mode(o.sky);
+    settings.sky = sky_mode_from_name(o.sky);
     settings.threads = o.threads;
     settings.level = o.level;
     settings.passages = o.passages;

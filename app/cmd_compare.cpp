@@ -22,24 +22,6 @@ namespace pvs::app {
 
 namespace {
 
-constexpr int kExitFileError = 1;
-constexpr int kExitBadArguments = 2;
-constexpr int kExitCancelled = 130;
-
-std::vector<std::string> split_list(const std::string& text)
-{
-    std::vector<std::string> names;
-    std::stringstream in(text);
-    for (std::string name; std::getline(in, name, ',');)
-        if (!name.empty())
-            names.push_back(name);
-    return names;
-}
-
-SkyPortals sky_mode(const std::string& name)
-{
-    return name == "all" ? SkyPortals::All : name == "none" ? SkyPortals::None : SkyPortals::SkyToSky;
-}
 
 std::string csv_text(const ui::CompareResult& result)
 {
@@ -84,10 +66,6 @@ nlohmann::json json_report(const CompareCommandOptions& o, const Zone& zone, con
             {"methods", rows}};
 }
 
-void write_text(const std::string& path, const std::string& text)
-{
-    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
-}
 
 void write_chart(const std::string& path, const std::string& title, const ui::CompareResult& result)
 {
@@ -96,7 +74,7 @@ void write_chart(const std::string& path, const std::string& title, const ui::Co
     if (std::filesystem::path(path).extension() == ".svg") {
         ui::chart::SvgCanvas svg(kWidth, kHeight);
         ui::chart::draw_speed_accuracy_chart(points, title, svg, {0, 0}, {float(kWidth), float(kHeight)});
-        write_text(path, svg.svg());
+        write_text_file(path, svg.svg());
     } else
         ui::chart::write_chart_png(points, title, kWidth, kHeight, path);
 }
@@ -124,7 +102,7 @@ int run_checked(const CompareCommandOptions& o, std::FILE* out, std::FILE* err)
         return kExitBadArguments;
     }
     ui::CompareOptions options;
-    options.methods = split_list(o.methods);
+    options.methods = split_comma_list(o.methods);
     for (const std::string& name : options.methods)
         if (!find_vis_method(name)) {
             std::fprintf(err, "pvscope: error: --methods: unknown method '%s' (%s)\n", name.c_str(),
@@ -136,30 +114,22 @@ int run_checked(const CompareCommandOptions& o, std::FILE* out, std::FILE* err)
     options.cameras = o.cameras;
     options.width = (*size)[0];
     options.height = (*size)[1];
-    options.sky = sky_mode(o.sky);
+    options.sky = sky_mode_from_name(o.sky);
     options.threads = o.threads;
     const Zone zone = load_zone(o.input);
-    std::unique_ptr<ProgressBar> bar;
-    std::string shown;
-    options.progress = [&](const std::string& stage, double fraction) {
-        if (stage != shown) {
-            bar = std::make_unique<ProgressBar>(err, stage);
-            shown = stage;
-        }
-        bar->update(fraction);
-        return !SigintScope::interrupted().load();
-    };
+    StagedProgress progress(err, &SigintScope::interrupted());
+    options.progress = std::ref(progress);
     const ui::CompareResult result = ui::run_compare(zone, options);
-    bar.reset();
+    progress.finish();
     if (result.cancelled) {
         std::fprintf(err, "pvscope: compare cancelled: nothing was written\n");
         return kExitCancelled;
     }
     print_table(out, result);
     if (!o.csv.empty())
-        write_text(o.csv, csv_text(result));
+        write_text_file(o.csv, csv_text(result));
     if (!o.json.empty())
-        write_text(o.json, json_report(o, zone, result).dump(2) + "\n");
+        write_text_file(o.json, json_report(o, zone, result).dump(2) + "\n");
     if (!o.chart.empty())
         write_chart(o.chart, std::filesystem::path(o.input).filename().string() + ": speed against accuracy", result);
     return 0;
@@ -169,15 +139,7 @@ int run_checked(const CompareCommandOptions& o, std::FILE* out, std::FILE* err)
 
 int run_compare_command(const CompareCommandOptions& options, std::FILE* out, std::FILE* err)
 {
-    try {
-        return run_checked(options, out, err);
-    } catch (const FileError& e) {
-        std::fprintf(err, "pvscope: error: %s\n", e.what());
-        return kExitFileError;
-    } catch (const std::exception& e) { // a zone without a tree, a chart that cannot be written
-        std::fprintf(err, "pvscope: error: %s: %s\n", options.input.c_str(), e.what());
-        return kExitFileError;
-    }
+    return run_reporting_errors(options.input, err, [&] { return run_checked(options, out, err); });
 }
 
 void register_compare_command(CLI::App& app, int& exit_code)

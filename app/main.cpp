@@ -2,6 +2,7 @@
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together.
 #include "app/cmd_bake.h"
 #include "app/cmd_compare.h"
+#include "app/cmd_stability.h"
 #include "app/cmd_convert.h"
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
@@ -25,6 +26,7 @@ int main(int argc, char** argv)
     pvs::app::register_convert_command(app, exit_code);
     pvs::app::register_bake_command(app, exit_code);
     pvs::app::register_compare_command(app, exit_code);
+    pvs::app::register_stability_command(app, exit_code);
     pvs::app::register_inspect_command(app, exit_code);
     std::string zone_path; // `pvscope FILE`: the inspector on FILE
     app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");

@@ -75,4 +75,14 @@ void ProgressBar::finish(const std::string& suffix)
     std::fflush(out_);
 }
 
+bool StagedProgress::operator()(const std::string& stage, double fraction)
+{
+    if (!bar_ || stage != stage_) {
+        bar_ = std::make_unique<ProgressBar>(out_, stage);
+        stage_ = stage;
+    }
+    bar_->update(fraction);
+    return !(cancel_ && cancel_->load());
+}
+
 } // namespace pvs::app

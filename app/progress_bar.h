@@ -6,7 +6,9 @@
 // readable. update() is cheap to call often; only the caller's thread may use the object.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <memory>
 #include <cstdio>
 #include <string>
 
@@ -40,6 +42,21 @@ private:
     int last_decile_ = -1;
     std::chrono::steady_clock::time_point start_;
     std::chrono::steady_clock::time_point last_draw_;
+};
+
+// Progress of work in named stages (compare, stability): a bar per stage, drawn anew when the
+// stage changes. As a progress callback it returns false once `cancel` is set (Ctrl-C).
+class StagedProgress {
+public:
+    StagedProgress(std::FILE* out, const std::atomic<bool>* cancel) : out_(out), cancel_(cancel) {}
+    bool operator()(const std::string& stage, double fraction);
+    void finish() { bar_.reset(); }
+
+private:
+    std::FILE* out_;
+    const std::atomic<bool>* cancel_;
+    std::string stage_;
+    std::unique_ptr<ProgressBar> bar_;
 };
 
 } // namespace pvs::app

@@ -41,6 +41,18 @@ inline Zone load_s3d(const std::string& path)
     return eq::load_eq_zone(test::read_bytes(path), path);
 }
 
+// Everything written to a temporary file, which is then closed.
+inline std::string read_and_close(std::FILE* file)
+{
+    std::rewind(file);
+    std::string text;
+    char buffer[4096];
+    for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;)
+        text.append(buffer, n);
+    std::fclose(file);
+    return text;
+}
+
 inline std::string read_text(const std::filesystem::path& path)
 {
     std::ifstream in(path);
@@ -65,13 +77,7 @@ protected:
     {
         std::FILE* err = std::tmpfile();
         const int code = app::run_bake(options, err, cancel);
-        std::rewind(err);
-        err_.clear();
-        char buffer[4096];
-        size_t n;
-        while ((n = std::fread(buffer, 1, sizeof buffer, err)) > 0)
-            err_.append(buffer, n);
-        std::fclose(err);
+        err_ = read_and_close(err);
         return code;
     }
     std::string path(const std::string& name) const { return (dir_ / name).string(); }

@@ -19,19 +19,9 @@ protected:
         std::FILE* out = std::tmpfile();
         std::FILE* err = std::tmpfile();
         const int code = app::run_compare_command(o, out, err);
-        out_ = slurp(out);
-        err_ = slurp(err);
+        out_ = read_and_close(out);
+        err_ = read_and_close(err);
         return code;
-    }
-    static std::string slurp(std::FILE* f)
-    {
-        std::rewind(f);
-        std::string text;
-        char buffer[4096];
-        for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, f)) > 0;)
-            text.append(buffer, n);
-        std::fclose(f);
-        return text;
     }
     std::string out_;
 };

@@ -32,7 +32,7 @@
 // each round the new bits are counted; the bake stops after a round whose new bits are fewer than
 // converge_share of all bits (it is then "converged"), or when the total would pass max_samples,
 // or on cancel. The report lists every round (lines, bits, new bits, time): how close it came.
-// Measured (docs/performance.md): on e1m1 the yield per doubling falls slowly (about 0.8x), so the
+// Measured (docs/performance.md): on e1m1 the yield per doubling falls slowly (0.7-0.9x), so the
 // last bits of a big level cost hours; a bake of a minute leaves about 0.5 % of them unfound.
 //
 // Deterministic for a seed: line i of region A (or of frontier pair (A, B)) depends only on the seed,
