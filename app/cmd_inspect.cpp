@@ -25,6 +25,7 @@ struct InspectOptions {
     bool pick_centre = false;
     int bsp_node = -1;
     std::string bake;
+    bool compare = false;
 };
 
 // "membership,planes,portals,bounds,zonelines,frustum" (any subset, or "none") -> the toggles.
@@ -102,6 +103,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--bake", o->bake, "Bake a PVS at start (portal vis on a background thread), as the Bake panel does")
         ->check(CLI::IsMember({"portal-fast", "portal-full"}));
+    cmd->add_flag("--compare", o->compare, "Run the Compare panel's compare of every method at start, its window open");
     cmd->callback([o, &exit_code] {
         const auto size = parse_size_argument(o->size); // the validator accepted it
         gui::InspectorOptions options;
@@ -117,6 +119,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         options.overlays = parse_overlays(o->overlays).value_or(ui::OverlaySettings{});
         options.pick_centre = o->pick_centre;
         options.bsp_node = o->bsp_node;
+        options.compare = o->compare;
         if (!o->bake.empty()) {
             gui::BakeRequest request;
             request.method = o->bake == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;

@@ -179,6 +179,7 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
     panels.zone.open_path = options.zone_path;
     if (options.bake)
         panels.bake.request = *options.bake;
+    panels.compare.expanded = options.compare;
     // Scripted runs (screenshots, timings) leave the user's recent files alone.
     if (options.screenshot.empty()) {
         panels.file.recent = RecentFiles(default_recent_files_path());
@@ -217,7 +218,9 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        if (scripted && state.bake_job().status() == BakeStatus::Running && frames == 0) {
+        const bool working = state.bake_job().status() == BakeStatus::Running ||
+                             state.compare_job().status() == BakeStatus::Running;
+        if (scripted && working && frames == 0) {
             glfwSwapBuffers(platform.window);
             continue; // a scripted bake: the timed or screenshot frames start once it is done
         }
@@ -263,6 +266,13 @@ int run_inspector(const InspectorOptions& options)
     state.overlays = options.overlays;
     if (options.bake)
         state.start_bake(*options.bake);
+    if (options.compare) {
+        const ComparePanel defaults;
+        ui::CompareOptions compare;
+        compare.reference_samples = uint64_t(defaults.reference_samples);
+        compare.cameras = size_t(defaults.cameras);
+        state.start_compare(compare);
+    }
     if (options.bsp_node >= 0 && size_t(options.bsp_node) < state.zone().tree.nodes.size())
         state.selected_node = options.bsp_node;
     if (options.camera) {

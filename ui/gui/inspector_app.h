@@ -34,6 +34,9 @@ struct InspectorOptions {
     int32_t bsp_node = -1;    // the BSP panel's selected node at start (-1: none)
     // Start a bake at launch; scripted runs count their frames only once it has finished.
     std::optional<BakeRequest> bake;
+    // Run the Compare panel's compare at launch, its window open; scripted runs count their frames
+    // only once it has finished (the README's and docs' Compare screenshots).
+    bool compare = false;
 };
 
 // Opens the window and runs until it is closed or the screenshot is written. Returns the

@@ -50,7 +50,7 @@ void draw_inspector(InspectorState& state, InspectorPanels& panels, float dt_sec
     // Compare: a wide window over the lower part of the viewport, its chart needs the width.
     place({left, top + std::floor(display.y * 0.55f)}, {display.x - left - right, display.y * 0.45f - top},
           ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver); // opened when wanted: it covers the viewport
+    ImGui::SetNextWindowCollapsed(!panels.compare.expanded, ImGuiCond_FirstUseEver); // it covers the viewport
     draw_compare_panel(state, panels.compare);
     draw_file_dialogs(state, panels.file);
 }

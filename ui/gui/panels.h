@@ -91,6 +91,7 @@ void draw_bake_panel(InspectorState& state, BakePanel& panel);
 struct ComparePanel {
     int reference_samples = 512; // the reference's lines per region
     int cameras = 100;           // the walk's cameras (popping and overdraw)
+    bool expanded = false;       // the window starts open (else collapsed: it covers the viewport)
 };
 void draw_compare_panel(InspectorState& state, ComparePanel& panel);
 
