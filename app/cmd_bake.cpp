@@ -4,6 +4,7 @@
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "visibility/bit_row.h"
+#include "visibility/eval/pvs_gap.h"
 #include "visibility/file_error.h"
 #include "visibility/methods/vis_method.h"
 #include "visibility/portal/box_clusters.h"
@@ -369,12 +370,7 @@ int run_registry_method(const BakeOptions& o, const Input& in, double load_secon
     if (!o.report.empty()) {
         const VisMethod& m = *find_vis_method(o.method);
         const uint32_t regions = pvs.region_count();
-        size_t bits = 0;
-        std::vector<uint64_t> row(pvs.words_per_row());
-        for (uint32_t r = 0; r < regions; ++r) {
-            pvs.decode_row(r, row);
-            bits += bits::count(row);
-        }
+        const uint64_t bits = pvs_gap(&pvs, pvs).bits;
         nlohmann::json j = {{"input", o.input},           {"output", o.output},
                             {"format", format_name(in.format)}, {"method", o.method},
                             {"params", m.label(method_settings(o))},

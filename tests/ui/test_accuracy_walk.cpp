@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 
 namespace pvs::ui {
 namespace {
@@ -108,6 +109,20 @@ TEST(AccuracyWalk, FrustumAloneNeverCullsANeededFaceAndPvsDrawsLess)
     EXPECT_LT(tri_both[150], tri_frustum[150]);
 }
 
+// One camera (x, y, z, yaw, pitch) culled with the file's PVS at 640x480, as the baked walk test does.
+std::vector<WalkRow> walk_one_camera_640x480(const Zone& zone, const std::array<float, 5>& at)
+{
+    Camera camera;
+    camera.position = {at[0], at[1], at[2]};
+    camera.yaw_degrees = at[3];
+    camera.pitch_degrees = at[4];
+    WalkOptions options;
+    options.width = 640;
+    options.height = 480;
+    const std::vector<Camera> cameras{camera};
+    return run_accuracy_walk(zone, &*zone.baked_pvs, cameras, options);
+}
+
 // Found by the 640x480 walk over e1m1 (test_accuracy_walk_baked.cpp, camera 1588): one pixel at a
 // wall's edge whose sight line is open in the tree, to a region that not even portal-fast's row
 // holds. The line passes a wall's corner by less than kSightMargin: a hair-thin line that portal
@@ -116,15 +131,9 @@ TEST(AccuracyWalk, AGrazingLinePastAWallCornerIsNotConfirmed)
 {
     SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
     const Zone& zone = *test::shared_zone("quake/e1m1.bsp");
-    Camera camera;
-    camera.position = {-26.85260009765625f, 772.05078125f, 121.17022705078125f};
-    camera.yaw_degrees = 298.68560791015625f;
-    camera.pitch_degrees = 24.100654602050781f;
-    WalkOptions options;
-    options.width = 640;
-    options.height = 480;
-    const std::vector<Camera> cameras{camera};
-    const std::vector<WalkRow> rows = run_accuracy_walk(zone, &*zone.baked_pvs, cameras, options);
+    const std::vector<WalkRow> rows =
+        walk_one_camera_640x480(zone, {-26.85260009765625f, 772.05078125f, 121.17022705078125f, 298.68560791015625f,
+                                       24.100654602050781f});
     ASSERT_EQ(rows.size(), 1u);
     EXPECT_EQ(rows[0].cull.region, 952);
     EXPECT_EQ(rows[0].popping_grazing, 1u) << "the pixel past the wall corner";
@@ -139,15 +148,9 @@ TEST(AccuracyWalk, AFaceTheSeeingRegionDoesNotListIsUnlistedNotPopping)
 {
     SHARED_DATA_OR_SKIP(path, "quake/e1m2.bsp");
     const Zone& zone = *test::shared_zone("quake/e1m2.bsp");
-    Camera camera;
-    camera.position = {66.82305908203125f, -79.1641845703125f, 830.5084228515625f};
-    camera.yaw_degrees = 298.6485595703125f;
-    camera.pitch_degrees = -58.822456359863281f;
-    WalkOptions options;
-    options.width = 640;
-    options.height = 480;
-    const std::vector<Camera> cameras{camera};
-    const std::vector<WalkRow> rows = run_accuracy_walk(zone, &*zone.baked_pvs, cameras, options);
+    const std::vector<WalkRow> rows =
+        walk_one_camera_640x480(zone, {66.82305908203125f, -79.1641845703125f, 830.5084228515625f, 298.6485595703125f,
+                                       -58.822456359863281f});
     ASSERT_EQ(rows.size(), 1u);
     EXPECT_EQ(rows[0].cull.region, 809);
     EXPECT_EQ(rows[0].accuracy.popping_pixels, 1u);

@@ -10,7 +10,7 @@ PortalSampler::PortalSampler(const PortalSet& set, uint32_t region_count)
 {
     std::vector<std::vector<Link>> per_region(region_count);
     triangle_first_.assign(set.portals.size() + 1, 0);
-    normals_.assign(set.portals.size(), glm::dvec3(0.0));
+
     for (size_t i = 0; i < set.portals.size(); ++i) {
         const Portal& p = set.portals[i];
         const bool regions_ok = p.regions[0] >= 0 && p.regions[1] >= 0 && uint32_t(p.regions[0]) < region_count &&
@@ -30,13 +30,6 @@ PortalSampler::PortalSampler(const PortalSet& set, uint32_t region_count)
         }
         triangle_first_[i + 1] = uint32_t(cumulative_area_.size());
         if (area > 0.0) {
-            glm::dvec3 newell(0.0);
-            for (uint32_t k = 0; k < p.point_count; ++k) {
-                const glm::dvec3 a(set.points[p.first_point + k]);
-                const glm::dvec3 b(set.points[p.first_point + (k + 1) % p.point_count]);
-                newell += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-            }
-            normals_[i] = glm::normalize(newell);
             per_region[size_t(p.regions[0])].push_back({uint32_t(i), uint32_t(p.regions[1])});
             per_region[size_t(p.regions[1])].push_back({uint32_t(i), uint32_t(p.regions[0])});
         }
@@ -67,7 +60,7 @@ size_t PortalSampler::memory_bytes() const
 {
     return links_.capacity() * sizeof(Link) + link_first_.capacity() * sizeof(uint32_t) +
            triangle_first_.capacity() * sizeof(uint32_t) + triangles_.capacity() * sizeof(glm::dvec3) +
-           cumulative_area_.capacity() * sizeof(double) + normals_.capacity() * sizeof(glm::dvec3);
+           cumulative_area_.capacity() * sizeof(double);
 }
 
 } // namespace pvs

@@ -35,8 +35,6 @@ public:
     // A point of the portal from three uniform numbers in [0, 1). Precondition: the portal is
     // one of links()' portals.
     glm::dvec3 point(uint32_t portal, double u0, double u1, double u2) const;
-    // The unit normal of the portal's plane (Newell's method over its points).
-    const glm::dvec3& normal(uint32_t portal) const { return normals_[portal]; }
     size_t memory_bytes() const;
 
 private:
@@ -45,7 +43,6 @@ private:
     std::vector<uint32_t> triangle_first_;  // per portal + 1: its fan triangles
     std::vector<glm::dvec3> triangles_;     // three corners per fan triangle
     std::vector<double> cumulative_area_;   // per fan triangle, within its portal
-    std::vector<glm::dvec3> normals_;       // per portal (zero for portals left out)
 };
 
 } // namespace pvs

@@ -27,9 +27,6 @@ double seconds_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Frontier lines closer than this (the sine of the angle) to a portal's plane are not traced.
-constexpr double kGrazing = 1e-6;
-
 // Salts that keep the two samplers' streams apart.
 constexpr uint64_t kVolumeStream = 0x564f4c554d45ull;   // "VOLUME"
 constexpr uint64_t kFrontierStream = 0x46524f4e54ull;   // "FRONT"
@@ -116,13 +113,9 @@ void sample_frontier(Shared& s, FrontierPair pair, uint64_t first, uint64_t end,
         const double length = glm::length(d);
         if (!(length > 0.0))
             continue;
-        // A line (nearly) in a portal's plane runs along the wall that portal is cut from: where
-        // the tree puts such a line is decided by its tie rule, not by open space (coplanar
-        // portals gave exactly such lines, and pairs no vis tool finds). Not a sight line.
+        // A line in a portal's plane (coplanar portals) runs along the wall the portal is cut
+        // from; the beam test of witness_pairs rejects what it would prove, as any grazing line.
         const glm::dvec3 dir = d / length;
-        if (std::abs(glm::dot(dir, s.portals.normal(exit))) < kGrazing ||
-            std::abs(glm::dot(dir, s.portals.normal(entry))) < kGrazing)
-            continue;
         prove(s, p, dir, scratch);
         const std::vector<uint32_t>& crossed = scratch.stretch.regions;
         joined = joined || (std::find(crossed.begin(), crossed.end(), to) != crossed.end() &&

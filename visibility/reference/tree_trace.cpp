@@ -11,8 +11,6 @@ bool TreeTracer::open_beam(const glm::dvec3& from, const glm::dvec3& direction, 
     auto open = [&](const glm::dvec3& start) {
         return !trace(start, direction, length, scratch, [](int32_t, double, double) {}).blocked;
     };
-    if (!open(from))
-        return false;
     const glm::dvec3 helper = std::abs(direction.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
     const glm::dvec3 across1 = glm::normalize(glm::cross(direction, helper));
     const glm::dvec3 across2 = glm::cross(direction, across1);

@@ -69,9 +69,9 @@ public:
     TraceEnd trace(const glm::dvec3& origin, const glm::dvec3& direction, double t_end, Scratch& stack,
                    Visit&& visit) const;
 
-    // Whether the segment from `from` along the unit `direction` for `length` is open and stays
-    // open when moved by `margin` across itself (four companions: up, down, left and right of
-    // it, both ends moved alike). A line that is open only because it passes a wall's edge or
+    // Whether a segment already found open (from `from` along the unit `direction` for
+    // `length`) stays open when moved by `margin` across itself: its four companions, up, down,
+    // left and right of it, both ends moved alike, are traced (the segment itself is not again). A line that is open only because it passes a wall's edge or
     // corner by less than the margin, or through a gap narrower than it, is not: such hair-thin
     // lines are real in exact geometry but are what every vis tool drops by its epsilon and what
     // a viewer sees at most as a sparkle. Both the reference and the popping check ask this.
