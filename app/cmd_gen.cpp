@@ -5,6 +5,7 @@
 #include "visibility/file_error.h"
 #include "wld/convert.h"
 #include "wld/gen/generate_zone.h"
+#include "wld/gen/stability_cases.h"
 #include "wld/gen/voxel_level.h"
 
 #include <chrono>
@@ -19,7 +20,25 @@ struct GenOptions {
     gen::GenParams params = gen::demo_zone_params();
     bool json = false;
     std::string output;
+    std::string case_name; // a crafted stability case instead of a procedural zone
 };
+
+// The case's boxes (= regions) and its truth, row by row, for a user checking what a method got.
+void print_case(const gen::StabilityCase& c)
+{
+    std::printf("stability case %s: %s\n", c.name.c_str(), c.failure.c_str());
+    std::printf("truth (known by construction), region: the regions it sees\n");
+    for (uint32_t r = 0; r < c.region_names.size(); ++r) {
+        std::printf("  %u %-8s:", r, c.region_names[r].c_str());
+        for (uint32_t s = 0; s < c.region_names.size(); ++s)
+            if (s != r && c.truth.visible(r, s))
+                std::printf(" %s", c.region_names[s].c_str());
+        std::printf("\n");
+    }
+    std::printf("camera: (%.3f, %.3f, %.3f) yaw %.1f pitch %.1f\n\n", double(c.camera.position.x),
+                double(c.camera.position.y), double(c.camera.position.z), double(c.camera.yaw_degrees),
+                double(c.camera.pitch_degrees));
+}
 } // namespace
 
 void register_gen_command(CLI::App& app, int& exit_code)
@@ -38,6 +57,10 @@ void register_gen_command(CLI::App& app, int& exit_code)
     cmd->add_flag("--no-bake{false},--bake", options->params.bake,
                   "Do not bake the PVS (by default the zone is baked with portal-full when made)");
     cmd->add_flag("--json", options->json, "Print the report as JSON");
+    std::vector<std::string> case_names(gen::stability_case_names().begin(), gen::stability_case_names().end());
+    cmd->add_option("--case", options->case_name, "Instead of rooms: a crafted zone on one failure mode, with its "
+                                                  "known truth (pvscope stability --cases runs every method on them)")
+        ->check(CLI::IsMember(case_names));
     cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
     cmd->callback([options, &exit_code] {
         const auto start = std::chrono::steady_clock::now();
@@ -49,9 +72,14 @@ void register_gen_command(CLI::App& app, int& exit_code)
             bar->update(fraction);
             return true;
         };
-        const Zone zone = gen::generate_zone(params);
+        std::optional<gen::StabilityCase> crafted;
+        if (!options->case_name.empty())
+            crafted.emplace(gen::make_stability_case(options->case_name));
+        const Zone zone = crafted ? std::move(crafted->zone) : gen::generate_zone(params);
         if (bar)
             bar->finish();
+        if (crafted && !options->json)
+            print_case(*crafted);
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         print_zone_report(zone, ms, options->json);
         exit_code = 0;

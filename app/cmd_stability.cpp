@@ -6,6 +6,8 @@
 #include "visibility/eval/stability.h"
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
+#include "wld/gen/case_table.h"
+#include "wld/gen/stability_cases.h"
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
@@ -18,7 +20,82 @@ namespace pvs::app {
 
 namespace {
 
+nlohmann::json json_case_rows(const gen::CaseTable& table)
+{
+    nlohmann::json rows = nlohmann::json::array();
+    for (const gen::CaseTableRow& r : table.rows)
+        rows.push_back({{"case", r.case_name},
+                        {"method", r.method},
+                        {"params", r.params},
+                        {"bound", bound_name(r.bound)},
+                        {"regions", r.regions},
+                        {"truth_bits", r.truth_bits},
+                        {"bits", r.bits},
+                        {"missing_bits", r.missing_bits},
+                        {"excess_bits", r.excess_bits},
+                        {"broken", r.broken()},
+                        {"seconds", r.seconds}});
+    return rows;
+}
 
+std::string csv_case_text(const gen::CaseTable& table)
+{
+    std::ostringstream out;
+    out << "case,method,params,bound,regions,truth_bits,bits,missing_bits,excess_bits,broken,seconds\n";
+    for (const gen::CaseTableRow& r : table.rows)
+        out << r.case_name << ',' << r.method << ',' << r.params << ',' << bound_name(r.bound) << ',' << r.regions
+            << ',' << r.truth_bits << ',' << r.bits << ',' << r.missing_bits << ',' << r.excess_bits << ','
+            << (r.broken() ? "true" : "false") << ',' << r.seconds << '\n';
+    return out.str();
+}
+
+void print_case_table(std::FILE* out, const gen::CaseTable& table)
+{
+    std::fprintf(out, "%-14s %-12s %8s %8s %8s %8s %8s %8s\n", "case", "method", "regions", "truth", "bits",
+                 "missing", "excess", "s");
+    for (const gen::CaseTableRow& r : table.rows)
+        std::fprintf(out, "%-14s %-12s %8u %8llu %8llu %8llu %8llu %8.3f%s\n", r.case_name.c_str(), r.method.c_str(),
+                     r.regions, static_cast<unsigned long long>(r.truth_bits), static_cast<unsigned long long>(r.bits),
+                     static_cast<unsigned long long>(r.missing_bits), static_cast<unsigned long long>(r.excess_bits),
+                     r.seconds, r.broken() ? "  BROKEN: breaks its bound" : "");
+    std::fprintf(out, "missing = truth bits the method lacks (popping); excess = bits beyond the truth (overdraw). "
+                      "The truth is known by construction (pvscope gen --case NAME shows a case)\n");
+}
+
+int run_cases(const StabilityCommandOptions& o, std::FILE* out, std::FILE* err)
+{
+    gen::CaseTableOptions options;
+    options.methods = split_comma_list(o.methods);
+    if (o.cases != "all")
+        options.cases = split_comma_list(o.cases);
+    options.reference_samples = o.samples;
+    options.threads = o.threads;
+    StagedProgress progress(err, &SigintScope::interrupted());
+    options.progress = std::ref(progress);
+    gen::CaseTable table;
+    try {
+        table = gen::run_case_table(options);
+    } catch (const std::invalid_argument& e) {
+        progress.finish();
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+        return kExitBadArguments;
+    }
+    progress.finish();
+    if (table.cancelled) {
+        std::fprintf(err, "pvscope: stability cancelled: nothing was written\n");
+        return kExitCancelled;
+    }
+    print_case_table(out, table);
+    if (!o.json.empty())
+        write_text_file(o.json, nlohmann::json{{"cases", o.cases},
+                                          {"reference", {{"samples", o.samples}}},
+                                          {"rows", json_case_rows(table)}}
+                                   .dump(2) +
+                               "\n");
+    if (!o.csv.empty())
+        write_text_file(o.csv, csv_case_text(table));
+    return 0;
+}
 
 nlohmann::json json_rows(const StabilityResult& result)
 {
@@ -101,6 +178,12 @@ int run_checked(const StabilityCommandOptions& o, std::FILE* out, std::FILE* err
 
 int run_stability_command(const StabilityCommandOptions& options, std::FILE* out, std::FILE* err)
 {
+    if (options.input.empty() == options.cases.empty()) {
+        std::fprintf(err, "pvscope: error: stability needs a zone file or --cases (not both)\n");
+        return kExitBadArguments;
+    }
+    if (!options.cases.empty())
+        return run_reporting_errors("--cases", err, [&] { return run_cases(options, out, err); });
     return run_reporting_errors(options.input, err, [&] { return run_checked(options, out, err); });
 }
 
@@ -110,8 +193,14 @@ void register_stability_command(CLI::App& app, int& exit_code)
     CLI::App* cmd = app.add_subcommand(
         "stability", "Bake each method on the zone as given and under transforms that change nothing a player could "
                      "see (translations by 2^k, quarter turns, mirror, 1e-3 jitter): bits changed, and bits missing "
-                     "against the reference of the untransformed zone");
-    cmd->add_option("file", o->input, "Zone file")->required()->check(CLI::ExistingFile);
+                     "against the reference of the untransformed zone; or, with --cases, each method on crafted zones whose "
+                     "truth is known");
+    cmd->add_option("file", o->input, "Zone file")->check(CLI::ExistingFile);
+    std::string case_list;
+    for (std::string_view name : gen::stability_case_names())
+        case_list += (case_list.empty() ? "" : ", ") + std::string(name);
+    cmd->add_option("--cases", o->cases, "Instead of a file: 'all' or comma-separated crafted cases with a known "
+                                         "truth (" + case_list + "); missing and excess bits per method and case");
     cmd->add_option("--methods", o->methods, "Comma-separated methods that bake: portal-fast, portal-full, clustered, "
                                              "reference")
         ->capture_default_str();

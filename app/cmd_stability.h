@@ -6,6 +6,12 @@
 // lost_bits, changed_rows, missing_bits, seconds}, the same as CSV; progress on stderr; Ctrl-C
 // cancels (exit 130). Exit codes: 0 done, 1 the file could not be read or a result written,
 // 2 bad arguments, 130 cancelled.
+//
+// `pvscope stability --cases all|NAME,... [--methods] [--samples] [--json] [--csv]`: instead of a
+// file, each method on each crafted case (wld/gen/stability_cases.h, wld/gen/case_table.h):
+// missing and excess bits against the case's known truth, entries {case, method, params, bound,
+// regions, truth_bits, bits, missing_bits, excess_bits, broken, seconds}. `broken` marks an
+// upper bound that misses a bit or a lower bound with an excess one; the exit code stays 0.
 #pragma once
 
 #include <CLI/App.hpp>
@@ -18,6 +24,7 @@ namespace pvs::app {
 
 struct StabilityCommandOptions {
     std::string input;
+    std::string cases; // "all" or comma-separated case names; instead of input
     std::string methods = "portal-fast,portal-full,clustered,reference";
     uint64_t samples = 256; // the reference's lines per region
     std::string sky = "sky-to-sky";

@@ -49,5 +49,38 @@ TEST_F(StabilityCommand, WritesEveryMethodAndTransform)
     EXPECT_EQ(run_stability(o, out), 2);
 }
 
+// --cases: the method x case table with its documented JSON fields; a file and --cases together,
+// or an unknown case, are refused.
+TEST_F(StabilityCommand, RunsTheCraftedCases)
+{
+    app::StabilityCommandOptions o;
+    o.cases = "crack-0.1,leak";
+    o.methods = "portal-full,reference";
+    o.samples = 256;
+    o.threads = 1;
+    o.json = path("cases.json");
+    o.csv = path("cases.csv");
+    std::string out;
+    ASSERT_EQ(run_stability(o, out), 0);
+    EXPECT_NE(out.find("crack-0.1"), std::string::npos) << out;
+    const nlohmann::json j = nlohmann::json::parse(read_text(o.json));
+    ASSERT_EQ(j["rows"].size(), 4u);
+    for (const auto& row : j["rows"]) {
+        for (const char* field : {"case", "method", "bound", "truth_bits", "missing_bits", "excess_bits", "broken"})
+            EXPECT_TRUE(row.contains(field)) << field;
+        EXPECT_FALSE(row["broken"].get<bool>()) << row.dump();
+    }
+    EXPECT_EQ(j["rows"][0]["method"], "portal-full");
+    EXPECT_EQ(j["rows"][0]["missing_bits"], 0);
+    EXPECT_EQ(j["rows"][1]["missing_bits"], 6); // the beam cannot pass a 0.1 crack
+    EXPECT_EQ(read_text(o.csv).rfind("case,method,params,bound,", 0), 0u);
+
+    o.cases = "no-such-case";
+    EXPECT_EQ(run_stability(o, out), 2);
+    o.cases = "leak";
+    o.input = bake_generated({5, 2}, "unused.s3d").input;
+    EXPECT_EQ(run_stability(o, out), 2);
+}
+
 } // namespace
 } // namespace pvs::test

@@ -75,12 +75,18 @@
 
 namespace pvs {
 
+inline constexpr float kPortalEpsilon = 0.001f;
+
 // Portals at sky regions (§2.6): SkyPortals, in media.h with the rest of the content rule.
 struct PortalOptions {
-    // Side tolerance of the splits and of the degenerate-point removal, in zone units.
-    float epsilon = kCellEpsilon;
+    // Side tolerance of the splits and of the degenerate-point removal, in zone units. Smaller
+    // than the cells' kCellEpsilon: an opening narrower than this epsilon, or with less than
+    // min_area, is lost (no portal, so no method sees through it), and a crack 0.01 units wide
+    // or a 0.05-unit pinhole is a real sight line (stability cases crack-0.01 and pinhole).
+    // The Quake maps have no piece that small either way (pieces_tiny = 0 with both settings).
+    float epsilon = kPortalEpsilon;
     // Pieces with at most this area (squared zone units) are not portals.
-    float min_area = 0.01f;
+    float min_area = 1e-4f;
     SkyPortals sky = SkyPortals::SkyToSky;
 };
 

@@ -8,7 +8,10 @@
 #pragma once
 
 #include "visibility/zone.h"
+#include "wld/gen/grid_axes.h"
 #include "wld/gen/voxel_level.h"
+
+#include <span>
 
 #include <vector>
 
@@ -25,7 +28,9 @@ struct KdBsp {
     std::vector<uint32_t> region_leaf; // region id -> leaf index
 };
 
-// cell_size: world units per cell; origin: world position of cell (0,0,0)'s low corner.
-KdBsp build_kd_bsp(const VoxelLevel& level, float cell_size, const glm::vec3& origin);
+// axes: where the cell boundaries lie (grid_axes.h). labels (optional, one per cell as
+// level.cells): cells of one content but different labels are kept apart as if their contents
+// differed, so that each labelled box of a stability case becomes its own leaves.
+KdBsp build_kd_bsp(const VoxelLevel& level, const GridAxes& axes, std::span<const uint32_t> labels = {});
 
 } // namespace pvs::gen
