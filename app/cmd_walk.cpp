@@ -6,6 +6,8 @@
 #include "ui/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/eval/sight_check.h"
+#include "visibility/eval/stale_region_cache.h"
+#include "visibility/portal/portalize.h"
 #include "visibility/file_error.h"
 #include "wld/zone_file.h"
 
@@ -24,7 +26,9 @@ struct WalkCommandOptions {
     std::string path;
     size_t cameras = 500;
     uint64_t seed = 1;
-    std::string camera_path; // "regions" or a file of x,y,z,yaw,pitch lines
+    std::string camera_path; // "regions", "portals" or a file of x,y,z,yaw,pitch lines
+    float step = 4.0f;       // --path portals: units between cameras
+    float region_cache = 0.0f; // > 0: cull from a stale region cache refreshed every this many units
     std::string cull = "pvs+frustum";
     std::string pvs = "baked";
     std::string size = "320x240";
@@ -175,7 +179,10 @@ int run_walk(const WalkCommandOptions& o)
         std::vector<Camera> cameras;
         if (o.camera_path == "regions")
             cameras = cameras_visiting_every_region(zone, o.seed, lens);
-        else if (!o.camera_path.empty())
+        else if (o.camera_path == "portals") {
+            const PortalSet portals = zone.portals ? *zone.portals : build_zone_portals(zone);
+            cameras = cameras_along_portals(zone, portals, o.step, o.cameras, o.seed, lens);
+        } else if (!o.camera_path.empty())
             cameras = read_camera_path(o.camera_path, lens);
         else
             cameras = random_cameras_in_regions(zone, o.cameras, o.seed, lens);
@@ -185,6 +192,20 @@ int run_walk(const WalkCommandOptions& o)
         options.width = (*size)[0];
         options.height = (*size)[1];
         options.time_culled_render = o.render_time;
+        std::vector<int32_t> cached_regions; // the stale cache's answer per camera, in walk order
+        if (o.region_cache > 0.0f) {
+            StaleRegionCache cache(zone, o.region_cache);
+            RegionLocator exact(zone.tree, zone.bounds());
+            size_t stale = 0;
+            for (const Camera& c : cameras) {
+                cached_regions.push_back(cache.region(c.position));
+                stale += cached_regions.back() != exact.locate(c.position).region;
+            }
+            options.forced_regions = cached_regions;
+            std::fprintf(stderr, "pvscope: region cache refreshed every %g units: %llu tree walks for %zu cameras, "
+                                 "%zu cameras culled from a stale region\n",
+                         double(o.region_cache), static_cast<unsigned long long>(cache.walks()), cameras.size(), stale);
+        }
         const bool tty = isatty(STDERR_FILENO) != 0;
         options.progress = [tty](size_t done, size_t total) {
             if (tty && (done % 16 == 0 || done == total)) {
@@ -220,8 +241,17 @@ void register_walk_command(CLI::App& app, int& exit_code)
     cmd->add_option("--cameras", o->cameras, "Number of seeded random cameras inside regions")->capture_default_str();
     cmd->add_option("--seed", o->seed, "Seed of the random cameras")->capture_default_str();
     cmd->add_option("--path", o->camera_path,
-                    "'regions' for one camera in every region a player can stand in, or a file of "
-                    "x,y,z,yaw,pitch lines (replaces --cameras)");
+                    "'regions' for one camera in every region a player can stand in, 'portals' for a player's "
+                    "continuous walk through the portal graph (--step units apart, at most --cameras), or a file "
+                    "of x,y,z,yaw,pitch lines (replaces the random cameras)");
+    cmd->add_option("--step", o->step, "--path portals: units between cameras")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--region-cache", o->region_cache,
+                    "Baseline: cull from a stale camera->region cache walked again only after the camera moved "
+                    "this many units (an EverQuest client uses 5); 0 = pvscope's culler (a tree walk every frame)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     cmd->add_option("--cull", o->cull, "none | frustum | pvs | pvs+frustum")->capture_default_str();
     cmd->add_option("--pvs", o->pvs,
                     "PVS source: baked (the file's), none, or portal-fast / portal-full (baked now from "

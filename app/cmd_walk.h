@@ -1,6 +1,8 @@
-// `pvscope walk FILE [--cameras N | --path regions|FILE] --csv out.csv`: culling speed and
+// `pvscope walk FILE [--cameras N | --path regions|portals|FILE] [--region-cache D] --csv out.csv`: culling speed and
 // image-space accuracy over a reproducible set of cameras (seeded cameras inside regions looking
-// anywhere, or a path that visits every region), one CSV row per camera and a summary.
+// anywhere, a path that visits every region, or a player's walk through the portals), one CSV row
+// per camera and a summary. --region-cache D culls from a stale camera -> region cache (walked
+// again only after a move of D units, as an EverQuest client does) to measure the popping it causes.
 #pragma once
 
 #include <CLI/App.hpp>

@@ -138,7 +138,10 @@ std::vector<std::vector<WalkRow>> run_accuracy_walks(const Zone& zone, std::span
         for (size_t p = 0; p < pvss.size(); ++p) {
             WalkRow row;
             row.camera = camera;
-            row.cull = cullers[p]->cull(camera, {options.mode, true}, visible);
+            CullOptions cull_options{options.mode, true};
+            if (i < options.forced_regions.size())
+                cull_options.forced_region = options.forced_regions[i];
+            row.cull = cullers[p]->cull(camera, cull_options, visible);
             row.accuracy = measure_image_accuracy(zone, face_regions, face_ids, visible);
             std::fill(region_drawn.begin(), region_drawn.end(), 0);
             for (uint32_t r : visible)

@@ -52,6 +52,9 @@ struct WalkOptions {
     uint32_t width = 320, height = 240;
     bool time_culled_render = false;
     SkyPortals sky = SkyPortals::SkyToSky; // the content rule of the sight-line check
+    // One region per camera to cull from instead of the culler's own tree walk (CullOptions::
+    // forced_region): a stale region cache being measured. Empty: the culler's walk.
+    std::span<const int32_t> forced_regions;
     // Called after each camera with (done, total); return false to stop early.
     std::function<bool(size_t, size_t)> progress;
 };

@@ -105,7 +105,12 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
 
     // Stage 1: where is the camera?
     StageClock clock(options.time_stages);
-    const PointLocation at = locator_.locate(camera.position);
+    PointLocation at;
+    if (options.forced_region)
+        at.region = *options.forced_region >= 0 && uint32_t(*options.forced_region) < region_count ? *options.forced_region
+                                                                                                   : kLeafOutside;
+    else
+        at = locator_.locate(camera.position);
     stats.lookup_us = clock.lap();
     stats.region = at.region >= 0 ? at.region : -1;
     stats.camera = at.region >= 0 ? CameraPlace::InRegion

@@ -58,6 +58,11 @@ struct CullOptions {
     // Fill CullStats' stage times. Tools want them; an engine's frame loop can save the four
     // clock reads (a few hundred ns on a VM) by turning them off.
     bool time_stages = true;
+    // Cull from this region instead of locating the camera: for callers that decide the region
+    // themselves, such as the stale region cache an engine keeps (eval/stale_region_cache.h),
+    // whose popping pvscope measures. A value outside [0, regions) means "not in a region"
+    // (CameraPlace::Outside). Unset: the tree walk, as always.
+    std::optional<int32_t> forced_region;
 };
 
 class Culler {

@@ -26,4 +26,12 @@ std::vector<Camera> random_cameras_in_regions(const Zone& zone, size_t count, ui
 // a player can stand in. Sky regions and regions too thin for the clearance are skipped.
 std::vector<Camera> cameras_visiting_every_region(const Zone& zone, uint64_t seed, const Camera& lens);
 
+// A player's continuous walk: a depth-first tour of the portal graph from a seeded start region
+// (not sky), each step from the region's middle (its bounds' centre when that lies in it, else the
+// mean of its portals' centres: inside the convex region either way) to the centre of a portal and on to the next region's middle, and back the same
+// way when a branch is done, so every leg stays in open space. A camera every `step` units along
+// it, looking where it goes (pitch 0), at most max_cameras of them. Empty without portals.
+std::vector<Camera> cameras_along_portals(const Zone& zone, const PortalSet& portals, float step, size_t max_cameras,
+                                          uint64_t seed, const Camera& lens);
+
 } // namespace pvs
