@@ -26,6 +26,7 @@ struct InspectOptions {
     int bsp_node = -1;
     std::string bake;
     bool compare = false;
+    std::string stability_case;
 };
 
 // "membership,planes,portals,bounds,zonelines,frustum" (any subset, or "none") -> the toggles.
@@ -104,6 +105,9 @@ void register_inspect_command(CLI::App& app, int& exit_code)
     cmd->add_option("--bake", o->bake, "Bake a PVS at start (portal vis on a background thread), as the Bake panel does")
         ->check(CLI::IsMember({"portal-fast", "portal-full"}));
     cmd->add_flag("--compare", o->compare, "Run the Compare panel's compare of every method at start, its window open");
+    cmd->add_option("--case", o->stability_case,
+                    "Open crafted stability case NAME[:METHOD] at its camera, culling with METHOD's PVS (default "
+                    "portal-full), the Stability panel open (instead of a file; pvscope stability --cases lists them)");
     cmd->callback([o, &exit_code] {
         const auto size = parse_size_argument(o->size); // the validator accepted it
         gui::InspectorOptions options;
@@ -120,6 +124,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         options.pick_centre = o->pick_centre;
         options.bsp_node = o->bsp_node;
         options.compare = o->compare;
+        options.stability_case = o->stability_case;
         if (!o->bake.empty()) {
             gui::BakeRequest request;
             request.method = o->bake == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;

@@ -62,7 +62,7 @@ struct CullOptions {
     // themselves, such as the stale region cache an engine keeps (eval/stale_region_cache.h),
     // whose popping pvscope measures. A value outside [0, regions) means "not in a region"
     // (CameraPlace::Outside). Unset: the tree walk, as always.
-    std::optional<int32_t> forced_region;
+    std::optional<int32_t> forced_region = std::nullopt;
 };
 
 class Culler {

@@ -127,8 +127,9 @@ TEST(PortalWalk, StepsThroughEveryRegionInOpenSpace)
         const PointLocation at = locate_point(c.zone.tree, cameras[i].position);
         ASSERT_TRUE(at.in_region()) << i;
         visited.insert(at.region);
-        if (i > 0)
+        if (i > 0) {
             EXPECT_LE(glm::distance(cameras[i].position, cameras[i - 1].position), 2.0f + 1e-3f) << i;
+        }
     }
     EXPECT_EQ(visited.size(), c.zone.regions.size());
     EXPECT_EQ(cameras_along_portals(c.zone, portals, 2.0f, 10, 7, Camera{}).size(), 10u);

@@ -7,6 +7,7 @@
 
 #include "tests/support/test_data.h"
 #include "visibility/eval/stability.h"
+#include "visibility/portal/portalize.h"
 #include "visibility/region_lookup.h"
 #include "wld/gen/generate_zone.h"
 
@@ -111,6 +112,40 @@ TEST(Stability, ConservativeMethodsMissNothingUnderAnyTransform)
     }
     options.methods = {"none"};
     EXPECT_THROW(run_stability(zone, options), std::invalid_argument);
+}
+
+// Built on a failure: portals cut with a fixed 0.001 epsilon (to give a 0.01-unit crack its
+// portal) made portal-fast on e1m1 gain 226 bits when moved by 2^16 (float steps of 0.0078 there)
+// and 6 574 under the 1e-3 jitter, and portal-full lose 35. The epsilon now grows with the
+// coordinates and has a floor above the jitter (portal_epsilon, portalize.h): nothing moves.
+TEST(Stability, PortalFastOnE1m1IsUnmovedFarAwayAndJittered)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+    const Zone& zone = *test::shared_zone("quake/e1m1.bsp");
+    StabilityOptions options;
+    options.methods = {"portal-fast"};
+    options.transforms = {find("translate 2^16"), find("jitter 0.001")};
+    options.reference_samples = 8;
+    options.sky = SkyPortals::None;
+    options.threads = 2;
+    const StabilityResult result = run_stability(zone, options);
+    ASSERT_EQ(result.rows.size(), 2u);
+    for (const StabilityRow& row : result.rows) {
+        EXPECT_EQ(row.changed_bits(), 0u) << row.transform;
+        EXPECT_EQ(row.missing_bits, 0u) << row.transform;
+    }
+}
+
+TEST(PortalEpsilon, GrowsWithTheCoordinatesAboveItsFloor)
+{
+    Aabb near_origin, far_away;
+    near_origin.grow(glm::vec3(-3000.0f));
+    near_origin.grow(glm::vec3(3000.0f));
+    far_away.grow(glm::vec3(65536.0f));
+    far_away.grow(glm::vec3(70000.0f));
+    EXPECT_EQ(portal_epsilon(near_origin), kMinPortalEpsilon);
+    EXPECT_FLOAT_EQ(portal_epsilon(far_away), 4.0f * 0.0078125f); // 4 float steps at 2^16
+    EXPECT_EQ(portal_epsilon(Aabb{}), kMinPortalEpsilon);
 }
 
 } // namespace

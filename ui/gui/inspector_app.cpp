@@ -180,6 +180,10 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
     if (options.bake)
         panels.bake.request = *options.bake;
     panels.compare.expanded = options.compare;
+    if (!options.stability_case.empty()) {
+        panels.stability.expanded = true;
+        panels.stability.table = gen::run_case_table(panels.stability.options); // well under a second
+    }
     // Scripted runs (screenshots, timings) leave the user's recent files alone.
     if (options.screenshot.empty()) {
         panels.file.recent = RecentFiles(default_recent_files_path());
@@ -256,7 +260,15 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
 int run_inspector(const InspectorOptions& options)
 {
     InspectorState state;
-    if (options.zone_path.empty())
+    if (!options.stability_case.empty()) {
+        const size_t colon = options.stability_case.find(':');
+        const std::string name = options.stability_case.substr(0, colon);
+        const std::string method = colon == std::string::npos ? "portal-full" : options.stability_case.substr(colon + 1);
+        if (!state.open_stability_case(name, method)) {
+            std::fprintf(stderr, "pvscope: error: --case: %s\n", state.error().c_str());
+            return 1;
+        }
+    } else if (options.zone_path.empty())
         state.open_demo();
     else if (!state.open_zone(options.zone_path)) {
         std::fprintf(stderr, "pvscope: error: %s\n", state.error().c_str());

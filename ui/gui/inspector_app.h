@@ -37,6 +37,10 @@ struct InspectorOptions {
     // Run the Compare panel's compare at launch, its window open; scripted runs count their frames
     // only once it has finished (the README's and docs' Compare screenshots).
     bool compare = false;
+    // "NAME" or "NAME:METHOD": open crafted stability case NAME (wld/gen/stability_cases.h) at its
+    // camera, culling with METHOD's PVS (portal-full when not given), instead of zone_path, with
+    // the Stability panel open and its table run (the docs' Stability screenshot).
+    std::string stability_case;
 };
 
 // Opens the window and runs until it is closed or the screenshot is written. Returns the

@@ -52,6 +52,10 @@ void draw_inspector(InspectorState& state, InspectorPanels& panels, float dt_sec
           ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowCollapsed(!panels.compare.expanded, ImGuiCond_FirstUseEver); // it covers the viewport
     draw_compare_panel(state, panels.compare);
+    place({left, top + std::floor(display.y * 0.50f)}, {display.x - left - right, display.y * 0.50f - top},
+          ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(!panels.stability.expanded, ImGuiCond_FirstUseEver);
+    draw_stability_panel(state, panels.stability);
     draw_file_dialogs(state, panels.file);
 }
 

@@ -142,6 +142,8 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     built_portals_.reset();
     selected_node = -1;
     orbit_target_.reset();
+    case_name_.clear();
+    case_missing_.clear();
     pvs_source_ = zone_->baked_pvs ? PvsSource::File : PvsSource::None;
     rebuild_culler();
 

@@ -192,6 +192,17 @@ public:
     const std::string& baked_label() const { return baked_label_; }
     const VisReport& baked_report() const { return baked_report_; }
 
+    // ---- Stability cases (the Stability panel) -----------------------------------------------
+    // Opens crafted case `name` (wld/gen/stability_cases.h) with its camera, bakes `method` of the
+    // registry on it (milliseconds: the cases are a few regions) and culls with that PVS as the
+    // "baked" source, labelled "METHOD on case NAME". False, with error() saying why, for an
+    // unknown case or a method that bakes nothing; the open zone then stays.
+    bool open_stability_case(const std::string& name, const std::string& method);
+    // The case open now (empty when the zone is not one) and the regions its truth has that the
+    // baked PVS of that case lacks, as "A -> B" lines (what the method would pop there).
+    const std::string& stability_case_name() const { return case_name_; }
+    const std::vector<std::string>& stability_case_missing() const { return case_missing_; }
+
     // ---- Selection -----------------------------------------------------------------------------
     // Picks the face under pixel (x, y) of the last frame's picture (an ID render of the same
     // camera and visible set) and selects it. Returns the selection, or nullopt (and clears it)
@@ -251,6 +262,8 @@ private:
 
     PvsSource pvs_source_ = PvsSource::None;
     std::optional<Pvs> baked_pvs_;
+    std::string case_name_;                 // the stability case open, if the zone is one
+    std::vector<std::string> case_missing_; // its truth's pairs the baked PVS lacks
     std::string baked_label_; // what the "baked" source holds: "portal-full level=4 ...", a compare row
     CompareJob compare_;
     VisReport baked_report_;

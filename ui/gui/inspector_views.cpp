@@ -4,9 +4,12 @@
 #include "ui/gui/inspector_state.h"
 
 #include "ui/gui/camera_math.h"
+#include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
+#include "wld/gen/stability_cases.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace pvs::gui {
@@ -214,6 +217,49 @@ void InspectorState::orbit(float yaw_degrees, float pitch_degrees)
     orbit_about(view_, *orbit_target_, yaw_degrees, pitch_degrees, kMaxPitchDegrees);
     if (!locked_)
         cull_ = view_;
+}
+
+} // namespace pvs::gui
+
+namespace pvs::gui {
+
+bool InspectorState::open_stability_case(const std::string& name, const std::string& method_name)
+{
+    const VisMethod* method = find_vis_method(method_name);
+    if (!method || !method->bakes) {
+        error_ = "'" + method_name + "' is not a method that bakes (" + vis_method_names() + ")";
+        return false;
+    }
+    std::optional<gen::StabilityCase> crafted;
+    try {
+        crafted.emplace(gen::make_stability_case(name));
+    } catch (const std::exception& e) {
+        error_ = e.what();
+        return false;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    auto zone = std::make_unique<Zone>(std::move(crafted->zone));
+    adopt_zone(std::move(zone), std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    case_name_ = name;
+    MethodSettings settings;
+    settings.samples = 1024;
+    MethodRun run = method->run(*zone_, settings);
+    baked_pvs_ = std::move(run.pvs);
+    baked_label_ = std::string(method->name) + " on case " + name;
+    case_missing_.clear();
+    for (uint32_t a = 0; a < crafted->truth.region_count(); ++a)
+        for (uint32_t b = 0; b < crafted->truth.region_count(); ++b)
+            if (crafted->truth.visible(a, b) && baked_pvs_ && !baked_pvs_->visible(a, b))
+                case_missing_.push_back(crafted->region_names[a] + " -> " + crafted->region_names[b]);
+    pvs_source_ = baked_pvs_ ? PvsSource::Baked : PvsSource::None;
+    const Camera lens = view_;
+    view_ = crafted->camera;
+    view_.fov_y_degrees = lens.fov_y_degrees;
+    view_.aspect = lens.aspect;
+    if (!locked_)
+        cull_ = view_;
+    rebuild_culler();
+    return true;
 }
 
 } // namespace pvs::gui

@@ -9,11 +9,13 @@
 #include "ui/gui/file_browser.h"
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/recent_files.h"
+#include "wld/gen/case_table.h"
 
 #include <imgui.h>
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +97,15 @@ struct ComparePanel {
 };
 void draw_compare_panel(InspectorState& state, ComparePanel& panel);
 
+// ---- Stability: every method on every crafted case, a click opens the case with that PVS --------
+struct StabilityPanel {
+    gen::CaseTableOptions options;       // methods and reference lines of the table
+    std::optional<gen::CaseTable> table; // the last run
+    std::string message;                 // the last error
+    bool expanded = false;               // the window starts collapsed (it covers the viewport)
+};
+void draw_stability_panel(InspectorState& state, StabilityPanel& panel);
+
 // ---- File menu (main menu bar): open through a file browser, recent files, the viewport PNG ---
 // Load errors open a modal that names the file and the problem; nothing here throws.
 struct FileMenu {
@@ -133,6 +144,7 @@ struct InspectorPanels {
     BspPanel bsp;
     BakePanel bake;
     ComparePanel compare;
+    StabilityPanel stability;
     FileMenu file;
     ImVec2 laid_out_for{0.0f, 0.0f}; // the display size of the last tiling
 };

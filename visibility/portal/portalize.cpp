@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <tuple>
 #include <utility>
 
@@ -143,12 +145,26 @@ void sort_unique(std::vector<int32_t>& v)
 
 } // namespace
 
+float portal_epsilon(const Aabb& world)
+{
+    if (world.empty())
+        return kMinPortalEpsilon;
+    float largest = 0.0f;
+    for (int a = 0; a < 3; ++a)
+        largest = std::max({largest, std::abs(world.min[a]), std::abs(world.max[a])});
+    if (!std::isfinite(largest))
+        return kMinPortalEpsilon;
+    const float step = std::nextafter(largest, std::numeric_limits<float>::infinity()) - largest;
+    return std::max(kMinPortalEpsilon, 4.0f * step);
+}
+
 PortalSet build_portals(const BspTree& tree, const std::vector<Region>& regions, const Aabb& world,
                         const PortalOptions& options, PortalStats* stats_out)
 {
     PortalStats stats;
     PortalSet set;
-    const Context ctx{tree, regions, options.epsilon > 0.0f ? options.epsilon : 0.0f};
+    const float epsilon = options.epsilon ? std::max(*options.epsilon, 0.0f) : portal_epsilon(world);
+    const Context ctx{tree, regions, epsilon};
     const float min_area = options.min_area > 0.0f ? options.min_area : 0.0f;
     std::vector<Piece> stack;
 

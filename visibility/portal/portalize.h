@@ -71,20 +71,27 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace pvs {
 
-inline constexpr float kPortalEpsilon = 0.001f;
+// The portal epsilon for a world box: kMinPortalEpsilon, or 4 float steps at the box's largest
+// coordinate where that is more. The floor absorbs a 1e-3 jitter of planes and points; the float
+// steps absorb rounding far from the origin (2^16 units: 0.0078 a step, epsilon 0.031). The
+// cells' kCellEpsilon (0.01) was the old fixed value: it lost the 0.01-unit crack of the stability
+// cases (the crack straddles a plane by no more than the epsilon, so it went whole to one side),
+// and a fixed 0.001 instead lost bits on e1m1 moved by 2^16 and changed 6 574 bits under the
+// jitter (docs/stability.md).
+inline constexpr float kMinPortalEpsilon = 0.004f;
+float portal_epsilon(const Aabb& world);
 
 // Portals at sky regions (§2.6): SkyPortals, in media.h with the rest of the content rule.
 struct PortalOptions {
-    // Side tolerance of the splits and of the degenerate-point removal, in zone units. Smaller
-    // than the cells' kCellEpsilon: an opening narrower than this epsilon, or with less than
-    // min_area, is lost (no portal, so no method sees through it), and a crack 0.01 units wide
-    // or a 0.05-unit pinhole is a real sight line (stability cases crack-0.01 and pinhole).
-    // The Quake maps have no piece that small either way (pieces_tiny = 0 with both settings).
-    float epsilon = kPortalEpsilon;
+    // Side tolerance of the splits and of the degenerate-point removal, in zone units. Unset:
+    // portal_epsilon(world) (below). An opening narrower than the epsilon, or with less than
+    // min_area, gets no portal, so no portal method sees through it.
+    std::optional<float> epsilon;
     // Pieces with at most this area (squared zone units) are not portals.
     float min_area = 1e-4f;
     SkyPortals sky = SkyPortals::SkyToSky;
