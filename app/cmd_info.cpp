@@ -17,7 +17,17 @@ namespace {
 struct InfoOptions {
     std::string path;
     bool json = false;
+    ZoneLoadOptions load;
 };
+
+void print_view_grid(const ViewGrid& g)
+{
+    std::printf("\nView grid (the camera's cell, one PVS row each)\n");
+    std::printf("  %u x %u x %u = %llu cells of %g grid units (%g OBJ units), from (%g, %g, %g); grid size %g\n",
+                g.counts.x, g.counts.y, g.counts.z, static_cast<unsigned long long>(g.cell_count()),
+                double(g.cell_size), double(g.cell_size * g.grid_size), double(g.min.x), double(g.min.y),
+                double(g.min.z), double(g.grid_size));
+}
 
 std::string human_bytes(size_t bytes)
 {
@@ -31,12 +41,14 @@ std::string human_bytes(size_t bytes)
 
 void print_text(const Zone& zone, const ZoneStats& s, double load_ms)
 {
-    std::printf("%s\n  %s, version %s; loaded in %.1f ms; the model takes %s\n\n", zone.source.path.c_str(),
-                zone.source.format.c_str(), zone.source.version.c_str(), load_ms, human_bytes(s.memory_bytes).c_str());
+    std::printf("%s\n  %s%s%s; loaded in %.1f ms; the model takes %s\n\n", zone.source.path.c_str(),
+                zone.source.format.c_str(), zone.source.version.empty() ? "" : ", version ",
+                zone.source.version.c_str(), load_ms, human_bytes(s.memory_bytes).c_str());
     std::printf("Counts\n");
     std::printf("  %-14s %10u   tree depth: max %u, mean %.1f\n", "nodes", s.tree.nodes, s.tree.max_depth,
                 s.tree.mean_depth);
-    std::printf("  %-14s %10u   (leaves that can hold the camera)\n", "regions", s.regions);
+    std::printf("  %-14s %10u   (%s)\n", "regions", s.regions,
+                zone.tree.exists() ? "leaves that can hold the camera" : "objects: the drawable groups");
     std::printf("  %-14s %10u\n", "solid leaves", s.tree.solid_leaves);
     if (s.tree.outside_leaves)
         std::printf("  %-14s %10u\n", "outside leaves", s.tree.outside_leaves);
@@ -57,13 +69,16 @@ void print_text(const Zone& zone, const ZoneStats& s, double load_ms)
         std::printf("  %u rows (%u missing, read as all visible), %s storage, %s\n", s.pvs.rows, s.pvs.missing_rows,
                     s.pvs.dense ? "dense" : "compressed", human_bytes(s.pvs.memory_bytes).c_str());
         const double to_percent = s.regions ? 100.0 / s.regions : 0.0;
-        std::printf("  visible regions per region: mean %.1f (%.1f %%), min %u (%.1f %%), max %u (%.1f %%)\n",
+        std::printf(zone.view_grid ? "  visible objects per cell: mean"
+                                   : "  visible regions per region: mean %.1f (%.1f %%), min %u (%.1f %%), max %u (%.1f %%)\n",
                     s.pvs.mean_visible, s.pvs.mean_percent, s.pvs.min_visible, s.pvs.min_visible * to_percent,
                     s.pvs.max_visible, s.pvs.max_visible * to_percent);
     }
     if (!s.bounds.empty())
         std::printf("\nBounds\n  (%g, %g, %g) .. (%g, %g, %g)\n", s.bounds.min.x, s.bounds.min.y, s.bounds.min.z,
                     s.bounds.max.x, s.bounds.max.y, s.bounds.max.z);
+    if (zone.view_grid)
+        print_view_grid(*zone.view_grid);
     std::printf("\nIn the file\n ");
     for (const auto& [key, value] : zone.source.counts)
         std::printf(" %s %llu", key.c_str(), static_cast<unsigned long long>(value));
@@ -76,7 +91,7 @@ int run_info(const InfoOptions& options)
 {
     try {
         const auto start = std::chrono::steady_clock::now();
-        const Zone zone = load_zone(options.path);
+        const Zone zone = load_zone(options.path, options.load);
         const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         print_zone_report(zone, load_ms, options.json);
         return 0;
@@ -101,7 +116,12 @@ void register_info_command(CLI::App& app, int& exit_code)
 {
     auto options = std::make_shared<InfoOptions>();
     CLI::App* cmd = app.add_subcommand("info", "Print what is in a zone file: counts, flags, PVS density, tree, bounds, memory");
-    cmd->add_option("file", options->path, "Zone file (Quake .bsp)")->required();
+    cmd->add_option("file", options->path, "Zone file (.bsp, .s3d, .obj, or a .hepvs with its OBJ)")->required();
+    cmd->add_option("--obj", options->load.obj, "A .hepvs's OBJ level (default: the .obj of the same name beside it)");
+    cmd->add_option("--hepvs", options->load.hepvs, "An OBJ's .hepvs PVS (default: the .hepvs of the same name, if any)");
+    cmd->add_option("--grid-size", options->load.grid_size, "OBJ units per .hepvs grid unit (the baker's -g)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     cmd->add_flag("--json", options->json, "Print the report as JSON (stable field names, for scripts)");
     cmd->callback([options, &exit_code] { exit_code = run_info(*options); });
 }

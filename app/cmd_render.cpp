@@ -85,6 +85,8 @@ int run_render(const RenderOptions& options)
             std::printf("locked cull camera %g,%g,%g,%g,%g | ", double(cull_camera->position.x),
                         double(cull_camera->position.y), double(cull_camera->position.z),
                         double(cull_camera->yaw_degrees), double(cull_camera->pitch_degrees));
+        if (zone.view_grid)
+            std::printf("cell %d | ", s.cell);
         std::printf("region %d%s | cull %s%s | regions %u -> pvs %u -> frustum %u | triangles %llu -> pvs %llu -> "
                     "frustum %llu | cull %.3f ms | render %.1f ms (scene %.1f, draw %.1f) | %ux%u %s -> %s\n",
                     s.region, place, cull_mode_name(*cull_mode), s.pvs_used ? "" : " (no pvs stage)", s.regions_total,

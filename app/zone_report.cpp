@@ -58,6 +58,13 @@ nlohmann::json zone_report_json(const Zone& zone, const ZoneStats& s, double loa
         {"tree", {{"max_depth", s.tree.max_depth}, {"mean_depth", s.tree.mean_depth}, {"leaves", s.tree.leaves}}},
         {"zone_lines", zone_lines},
         {"source_counts", source_counts},
+        {"view_grid", zone.view_grid ? json{{"min", vec3_json(zone.view_grid->min)},
+                                            {"cell_size", zone.view_grid->cell_size},
+                                            {"counts", {zone.view_grid->counts.x, zone.view_grid->counts.y,
+                                                        zone.view_grid->counts.z}},
+                                            {"cells", zone.view_grid->cell_count()},
+                                            {"grid_size", zone.view_grid->grid_size}}
+                                     : json(nullptr)},
         {"notes", zone.source.notes},
     };
     if (!s.bounds.empty())

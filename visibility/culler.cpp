@@ -68,7 +68,8 @@ Culler::Culler(const Zone& zone, const Pvs* pvs)
     : zone_(&zone), pvs_(pvs), locator_(zone.tree, zone.bounds()), boxes_(region_bounds(zone)),
       zone_bounds_(zone.bounds()), face_stamp_(zone.mesh.faces.size(), 0)
 {
-    if (pvs_ && pvs_->region_count() == zone.region_count())
+    const uint64_t rows = zone.view_grid ? zone.view_grid->cell_count() : zone.region_count();
+    if (pvs_ && pvs_->region_count() == zone.region_count() && pvs_->row_count() == rows)
         cursor_.emplace(*pvs_);
     else
         pvs_ = nullptr; // a PVS of another zone is unusable: cull as if there were none
@@ -103,28 +104,37 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     const auto region_count = static_cast<uint32_t>(zone_->region_count());
     stats.regions_total = region_count;
 
-    // Stage 1: where is the camera?
+    // Stage 1: where is the camera? Its region (the tree), or in a grid zone its view cell.
     StageClock clock(options.time_stages);
-    PointLocation at;
-    if (options.forced_region)
-        at.region = *options.forced_region >= 0 && uint32_t(*options.forced_region) < region_count ? *options.forced_region
-                                                                                                   : kLeafOutside;
-    else
-        at = locator_.locate(camera.position);
+    int32_t row_index = -1; // the PVS row to use: the region, or the grid cell
+    if (zone_->view_grid && !options.forced_region) {
+        row_index = zone_->view_grid->cell_at(camera.position);
+        stats.cell = row_index;
+        stats.camera = row_index >= 0 ? CameraPlace::InRegion : CameraPlace::Outside;
+    } else {
+        PointLocation at;
+        if (options.forced_region)
+            at.region = *options.forced_region >= 0 && uint32_t(*options.forced_region) < region_count
+                            ? *options.forced_region
+                            : kLeafOutside;
+        else
+            at = locator_.locate(camera.position);
+        row_index = at.region >= 0 ? at.region : -1;
+        stats.region = row_index;
+        stats.camera = at.region >= 0 ? CameraPlace::InRegion
+                       : at.region == kLeafSolid ? CameraPlace::InSolid
+                                                 : CameraPlace::Outside;
+    }
     stats.lookup_us = clock.lap();
-    stats.region = at.region >= 0 ? at.region : -1;
-    stats.camera = at.region >= 0 ? CameraPlace::InRegion
-                   : at.region == kLeafSolid ? CameraPlace::InSolid
-                                             : CameraPlace::Outside;
 
     // Stage 2: the PVS row (a view of the dense matrix, or a decoded compressed row), or none.
     const bool want_pvs = options.mode == CullMode::Pvs || options.mode == CullMode::PvsFrustum;
-    stats.pvs_used = want_pvs && pvs_ && at.region >= 0;
+    stats.pvs_used = want_pvs && pvs_ && row_index >= 0;
     std::span<const uint64_t> row;
-    bool add_own_region = false; // a damaged row that lacks the camera's own region
+    bool add_own_region = false; // a damaged row that lacks the camera's own region (not in grid zones)
     if (stats.pvs_used) {
-        row = cursor_->row(uint32_t(at.region));
-        add_own_region = !bits::test(row, uint32_t(at.region));
+        row = cursor_->row(uint32_t(row_index));
+        add_own_region = stats.region >= 0 && !bits::test(row, uint32_t(stats.region));
         stats.regions_after_pvs = uint32_t(bits::count(row)) + (add_own_region ? 1u : 0u);
     } else {
         stats.regions_after_pvs = region_count;
@@ -148,14 +158,14 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     };
     if (stats.pvs_used) {
         bits::for_each_set(row, [&](size_t r) {
-            if (add_own_region && r > size_t(at.region)) { // keep the list ascending
-                consider(uint32_t(at.region));
+            if (add_own_region && r > size_t(stats.region)) { // keep the list ascending
+                consider(uint32_t(stats.region));
                 add_own_region = false;
             }
             consider(uint32_t(r));
         });
         if (add_own_region)
-            consider(uint32_t(at.region));
+            consider(uint32_t(stats.region));
     } else if (planes) {
         kept = boxes_.collect_all(*planes, visible.data()); // every region, four boxes at a time
     } else {
@@ -167,7 +177,7 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     stats.regions_after_frustum = static_cast<uint32_t>(visible.size());
 
     if (options.count_triangles)
-        count_stage_triangles(row, at.region, stats, visible);
+        count_stage_triangles(row, stats.region, stats, visible);
     return stats;
 }
 
@@ -178,7 +188,7 @@ void Culler::count_stage_triangles(std::span<const uint64_t> row, int32_t region
     candidates_.clear();
     if (stats.pvs_used) {
         bits::for_each_set(row, [&](size_t r) { candidates_.push_back(uint32_t(r)); });
-        if (!bits::test(row, uint32_t(region)))
+        if (region >= 0 && !bits::test(row, uint32_t(region)))
             candidates_.push_back(uint32_t(region));
         stats.triangles_after_pvs = count_triangles(candidates_);
     } else {

@@ -6,6 +6,9 @@
 // when the far plane lies beyond the whole zone. It walks the row's bits directly, so a frame
 // allocates nothing once `visible` has grown.
 //
+// Grid zones (Zone::view_grid: OBJ + .hepvs) find the camera's view cell on the grid instead
+// of walking a tree, and cull with that cell's row; a camera off the grid is "outside".
+//
 // Policy for a camera that is not in a region (inside a wall, outside the world, NaN): the PVS
 // stage is skipped and every region goes to the frustum test, and CullStats::camera says so.
 // Engines do the same (Quake's leaf 0 and a missing row give the all-visible row): the frame is
@@ -39,7 +42,8 @@ enum class CameraPlace : uint8_t { InRegion, InSolid, Outside };
 
 struct CullStats {
     CameraPlace camera = CameraPlace::Outside;
-    int32_t region = -1;          // the camera's region, or -1
+    int32_t region = -1;          // the camera's region, or -1 (always -1 in a grid zone)
+    int32_t cell = -1;            // grid zones: the camera's view cell (its PVS row), or -1
     bool pvs_used = false;        // false: no PVS, a mode without it, or the camera not in a region
     uint32_t regions_total = 0;
     uint32_t regions_after_pvs = 0;

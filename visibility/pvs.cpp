@@ -15,18 +15,24 @@ constexpr size_t kDenseAlwaysBytes = 256 * 1024;
 
 Pvs Pvs::build(uint32_t region_count, const RowSource& source, StoragePolicy policy)
 {
+    return build_rows(region_count, region_count, source, policy);
+}
+
+Pvs Pvs::build_rows(uint32_t row_count, uint32_t region_count, const RowSource& source, StoragePolicy policy)
+{
     Pvs pvs;
     pvs.region_count_ = region_count;
+    pvs.row_count_ = row_count;
     pvs.words_per_row_ = bits::words_for(region_count);
-    pvs.missing_.assign(pvs.words_per_row_, 0);
-    pvs.row_offsets_.assign(region_count, kMissingRow);
+    pvs.missing_.assign(bits::words_for(row_count), 0);
+    pvs.row_offsets_.assign(row_count, kMissingRow);
 
     // Compress every row first: the compressed size decides the storage, and identical rows
     // (Quake clusters, EverQuest zones with shared lists) are stored once.
     std::vector<uint64_t> row(pvs.words_per_row_);
     std::vector<uint8_t> encoded;
     std::unordered_map<std::string, uint32_t> seen;
-    for (uint32_t r = 0; r < region_count; ++r) {
+    for (uint32_t r = 0; r < row_count; ++r) {
         std::fill(row.begin(), row.end(), 0);
         if (!source(r, row)) {
             bits::set(pvs.missing_, r);
@@ -42,7 +48,7 @@ Pvs Pvs::build(uint32_t region_count, const RowSource& source, StoragePolicy pol
         pvs.row_offsets_[r] = it->second;
     }
 
-    const size_t dense_bytes = size_t{region_count} * pvs.words_per_row_ * sizeof(uint64_t);
+    const size_t dense_bytes = size_t{row_count} * pvs.words_per_row_ * sizeof(uint64_t);
     const size_t compressed_bytes = pvs.compressed_.size() + pvs.row_offsets_.size() * sizeof(uint32_t);
     bool dense = dense_bytes <= kDenseAlwaysBytes || dense_bytes <= 2 * compressed_bytes;
     if (policy != StoragePolicy::Auto)
@@ -54,8 +60,8 @@ Pvs Pvs::build(uint32_t region_count, const RowSource& source, StoragePolicy pol
     }
 
     pvs.storage_ = Storage::Dense;
-    pvs.dense_.resize(size_t{region_count} * pvs.words_per_row_);
-    for (uint32_t r = 0; r < region_count; ++r)
+    pvs.dense_.resize(size_t{row_count} * pvs.words_per_row_);
+    for (uint32_t r = 0; r < row_count; ++r)
         pvs.decode_compressed(r, std::span<uint64_t>(pvs.dense_).subspan(size_t{r} * pvs.words_per_row_,
                                                                         pvs.words_per_row_));
     pvs.compressed_ = {};
@@ -67,7 +73,7 @@ bool Pvs::row_missing(uint32_t region) const { return bits::test(missing_, regio
 
 void Pvs::decode_row(uint32_t region, std::span<uint64_t> out) const
 {
-    assert(region < region_count_ && out.size() >= words_per_row_);
+    assert(region < row_count_ && out.size() >= words_per_row_);
     out = out.first(words_per_row_);
     if (storage_ == Storage::Dense) {
         const uint64_t* src = dense_.data() + size_t{region} * words_per_row_;

@@ -1,5 +1,7 @@
 // Potentially visible sets: one row of region_count bits per region ("from region r, these
-// regions may be visible").
+// regions may be visible"). Grid zones (Zone::view_grid: OBJ levels with a .hepvs) have one row
+// per view cell instead, still of region_count bits: row_count() is then the cell count; for
+// every other zone rows and regions are the same set (row_count() == region_count()).
 //
 // Memory scales with what the scene needs: rows are kept either as a dense bit matrix or
 // compressed (Quake RLE, identical rows stored once), chosen when the PVS is built:
@@ -30,14 +32,19 @@ public:
 
     Pvs() = default;
     static Pvs build(uint32_t region_count, const RowSource& source, StoragePolicy policy = StoragePolicy::Auto);
+    // row_count rows of region_count bits each (grid zones: one row per view cell).
+    static Pvs build_rows(uint32_t row_count, uint32_t region_count, const RowSource& source,
+                          StoragePolicy policy = StoragePolicy::Auto);
 
-    uint32_t region_count() const { return region_count_; }
+    uint32_t region_count() const { return region_count_; } // bits per row
+    uint32_t row_count() const { return row_count_; }
+    bool square() const { return row_count_ == region_count_; }
     size_t words_per_row() const { return words_per_row_; }
     Storage storage() const { return storage_; }
     bool row_missing(uint32_t region) const;
     uint32_t missing_row_count() const { return missing_count_; }
 
-    // Writes the row of `region` into `out` (words_per_row() words). Never allocates.
+    // Writes the row of `region` (a row index: a view cell in a grid zone) into `out` (words_per_row() words). Never allocates.
     void decode_row(uint32_t region, std::span<uint64_t> out) const;
     // Dense storage only: the row in place, with no copy. Empty span for compressed storage.
     std::span<const uint64_t> dense_row(uint32_t region) const;
@@ -52,6 +59,7 @@ private:
     static constexpr uint32_t kMissingRow = 0xFFFFFFFFu;
 
     uint32_t region_count_ = 0;
+    uint32_t row_count_ = 0;
     size_t words_per_row_ = 0;
     Storage storage_ = Storage::Dense;
     uint32_t missing_count_ = 0;

@@ -23,7 +23,8 @@ PointLocation locate_point_from(const BspTree& tree, int32_t start, const glm::v
 {
     const int32_t leaf = tree.tie_rule == TieRule::OnPlaneGoesFront ? walk<true>(tree.nodes.data(), start, point)
                                                                     : walk<false>(tree.nodes.data(), start, point);
-    return {leaf, tree.leaf_region[leaf]};
+    // No tree at all (an OBJ zone: no node, no leaf): nowhere is a region.
+    return {leaf, size_t(leaf) < tree.leaf_region.size() ? tree.leaf_region[size_t(leaf)] : kLeafOutside};
 }
 
 PointLocation locate_point(const BspTree& tree, const glm::vec3& point)
@@ -43,7 +44,7 @@ PointLocation trace_point(const BspTree& tree, const glm::vec3& point, std::vect
         out.push_back({static_cast<uint32_t>(child), static_cast<uint8_t>(back)});
         child = node.children[back];
     }
-    return {~child, tree.leaf_region[~child]};
+    return {~child, size_t(~child) < tree.leaf_region.size() ? tree.leaf_region[size_t(~child)] : kLeafOutside};
 }
 
 } // namespace pvs

@@ -68,6 +68,9 @@ size_t Zone::memory_bytes() const
     total += heap_bytes(zone_lines);
     for (const ZoneLine& z : zone_lines)
         total += heap_bytes(z.target);
+    total += heap_bytes(region_names);
+    for (const std::string& name : region_names)
+        total += heap_bytes(name);
     if (baked_pvs)
         total += baked_pvs->memory_bytes();
     if (portals)
@@ -91,6 +94,7 @@ void Zone::shrink_to_fit()
     region_face_offsets.shrink_to_fit();
     region_faces.shrink_to_fit();
     zone_lines.shrink_to_fit();
+    region_names.shrink_to_fit();
 }
 
 } // namespace pvs

@@ -16,6 +16,7 @@
 #include "visibility/material_pixels.h"
 #include "visibility/math/aabb.h"
 #include "visibility/pvs.h"
+#include "visibility/view_grid.h"
 
 #include <cstdint>
 #include <glm/vec2.hpp>
@@ -80,6 +81,8 @@ struct BspTree {
     TieRule tie_rule = TieRule::OnPlaneGoesBack;
 
     static constexpr bool is_leaf(int32_t child) { return child < 0; }
+    // False for zones without a tree (OBJ levels: no node and no leaf).
+    bool exists() const { return !leaf_region.empty(); }
     static constexpr int32_t leaf_index(int32_t child) { return ~child; }
 };
 
@@ -153,8 +156,14 @@ struct Zone {
     std::vector<uint32_t> region_face_offsets; // regions.size() + 1 entries
     std::vector<uint32_t> region_faces;
     std::vector<ZoneLine> zone_lines;
+    // Names of the regions where the format has them (an OBJ's objects, which a .hepvs names);
+    // empty otherwise.
+    std::vector<std::string> region_names;
     std::optional<Pvs> baked_pvs;        // the PVS stored in the file, if any
     std::optional<PortalSet> portals;    // portals read from a file or built from the tree, if any
+    // Grid zones only (OBJ + .hepvs, view_grid.h): the camera's cell comes from this grid, and
+    // baked_pvs has one row per cell over the regions (the OBJ's objects). Absent for BSP zones.
+    std::optional<ViewGrid> view_grid;
 
     size_t region_count() const { return regions.size(); }
     std::span<const uint32_t> faces_of_region(uint32_t region) const

@@ -11,7 +11,7 @@ PvsDensity compute_pvs_density(const Pvs& pvs)
 {
     PvsDensity d;
     d.present = true;
-    d.rows = pvs.region_count();
+    d.rows = pvs.row_count();
     d.missing_rows = pvs.missing_row_count();
     d.memory_bytes = pvs.memory_bytes();
     d.dense = pvs.storage() == Pvs::Storage::Dense;
@@ -28,7 +28,7 @@ PvsDensity compute_pvs_density(const Pvs& pvs)
         d.max_visible = std::max(d.max_visible, visible);
     }
     d.mean_visible = static_cast<double>(total) / static_cast<double>(d.rows);
-    d.mean_percent = 100.0 * d.mean_visible / d.rows;
+    d.mean_percent = pvs.region_count() ? 100.0 * d.mean_visible / pvs.region_count() : 0.0;
     return d;
 }
 
@@ -50,6 +50,8 @@ TreeShape compute_tree_shape(const BspTree& tree)
         stack.pop_back();
         if (BspTree::is_leaf(item.child)) {
             const int32_t leaf = BspTree::leaf_index(item.child);
+            if (size_t(leaf) >= tree.leaf_region.size())
+                continue; // no tree at all (an OBJ zone), or a bad leaf reference
             s.max_depth = std::max(s.max_depth, item.depth);
             depth_sum += item.depth;
             ++leaf_refs;
@@ -66,6 +68,8 @@ TreeShape compute_tree_shape(const BspTree& tree)
                 ++s.outside_leaves;
             continue;
         }
+        if (size_t(item.child) >= tree.nodes.size())
+            continue;
         const BspNode& node = tree.nodes[item.child];
         stack.push_back({node.children[0], item.depth + 1});
         stack.push_back({node.children[1], item.depth + 1});

@@ -3,6 +3,8 @@
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
 #include "wld/eq/eq_zone_reader.h"
+#include "wld/hepvs/hepvs_zone.h"
+#include "wld/obj/obj_reader.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
 
@@ -35,10 +37,51 @@ void attach_sibling_prt(Zone& zone, const std::string& bsp_path)
     zone.source.notes.push_back("portals from " + prt_path.filename().string());
 }
 
+std::string sibling(const std::string& path, const char* extension)
+{
+    std::filesystem::path p(path);
+    p.replace_extension(extension);
+    std::error_code ec;
+    return std::filesystem::is_regular_file(p, ec) ? p.string() : std::string();
+}
+
+bool has_extension(const std::string& path, const char* extension)
+{
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+    return e == extension;
+}
+
+// An OBJ level, with its .hepvs when there is one.
+Zone load_obj_zone(const std::string& obj_path, std::string hepvs_path, const ZoneLoadOptions& options)
+{
+    Zone zone = read_obj_zone(read_whole_file(obj_path), obj_path);
+    if (hepvs_path.empty())
+        hepvs_path = sibling(obj_path, ".hepvs");
+    if (hepvs_path.empty()) {
+        zone.source.notes.push_back("no PVS: no .hepvs beside it (the culler falls back to the frustum)");
+        return zone;
+    }
+    const HepvsFile hepvs = read_hepvs(read_whole_file(hepvs_path), hepvs_path);
+    attach_hepvs(zone, hepvs, hepvs_path, options.grid_size);
+    return zone;
+}
+
 } // namespace
 
-Zone load_zone(const std::string& path)
+Zone load_zone(const std::string& path) { return load_zone(path, ZoneLoadOptions{}); }
+
+Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
 {
+    if (has_extension(path, ".hepvs")) {
+        const std::string obj = options.obj.empty() ? sibling(path, ".obj") : options.obj;
+        if (obj.empty())
+            throw FileError(path, 0, "a .hepvs is opened with its OBJ: none of the same name beside it (pass --obj)");
+        return load_obj_zone(obj, path, options);
+    }
+    if (is_obj_path(path))
+        return load_obj_zone(path, options.hepvs, options);
     const std::vector<uint8_t> bytes = read_whole_file(path);
     if (quake::looks_like_bsp29(bytes)) {
         Zone zone = quake::load_bsp29(bytes, path);
@@ -53,7 +96,8 @@ Zone load_zone(const std::string& path)
         throw FileError(path, 0, "Half-Life BSP 30 is not supported");
     if (eq::looks_like_pfs(bytes))
         return eq::load_eq_zone(bytes, path);
-    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29, EverQuest S3D)");
+    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29, EverQuest S3D, Wavefront .obj with "
+                             "HateEngine .hepvs)");
 }
 
 } // namespace pvs

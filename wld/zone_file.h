@@ -1,6 +1,9 @@
 // Opening a zone file of any supported format: the format is recognised from the bytes, not
-// from the file name. Sidecar files are picked up when present (a Quake map's .prt portal file
-// next to the .bsp). Throws FileError for unreadable, unknown or bad files.
+// from the file name, except for Wavefront OBJ (text with no magic: by its .obj extension) and
+// HateEngine .hepvs (by its extension: it is opened with its OBJ). Sidecar files are picked up
+// when present: a Quake map's .prt portal file next to the .bsp, an OBJ's .hepvs of the same
+// name (or the one ZoneLoadOptions names), a .hepvs's OBJ likewise. Throws FileError for
+// unreadable, unknown or bad files.
 #pragma once
 
 #include "visibility/zone.h"
@@ -9,6 +12,13 @@
 
 namespace pvs {
 
+struct ZoneLoadOptions {
+    std::string obj;   // the OBJ of a .hepvs (default: the .obj of the same name beside it)
+    std::string hepvs; // the .hepvs of an OBJ (default: the .hepvs of the same name, if any)
+    float grid_size = 16.0f; // OBJ units per .hepvs grid unit (the baker's -g)
+};
+
 Zone load_zone(const std::string& path);
+Zone load_zone(const std::string& path, const ZoneLoadOptions& options);
 
 } // namespace pvs

@@ -12,16 +12,17 @@ namespace pvs {
 
 PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference)
 {
-    const uint32_t regions = reference.region_count();
-    if (pvs && pvs->region_count() != regions)
-        throw std::invalid_argument("the PVS has " + std::to_string(pvs->region_count()) +
-                                    " rows and the reference " + std::to_string(regions));
+    const uint32_t regions = reference.region_count(), rows = reference.row_count();
+    if (pvs && (pvs->region_count() != regions || pvs->row_count() != rows))
+        throw std::invalid_argument("the PVS has " + std::to_string(pvs->row_count()) + " rows of " +
+                                    std::to_string(pvs->region_count()) + " regions and the reference " +
+                                    std::to_string(rows) + " of " + std::to_string(regions));
     const size_t words = reference.words_per_row();
     std::vector<uint64_t> ours(words), theirs(words);
     if (!pvs)
         bits::fill(ours, regions); // none: every region, every row
     PvsGap gap;
-    for (uint32_t r = 0; r < regions; ++r) {
+    for (uint32_t r = 0; r < rows; ++r) {
         if (pvs)
             pvs->decode_row(r, ours);
         reference.decode_row(r, theirs);
@@ -35,7 +36,7 @@ PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference)
         gap.missing_bits += row_missing;
         gap.rows_missing_bits += row_missing ? 1 : 0;
     }
-    gap.mean_visible = regions ? double(gap.bits) / regions : 0.0;
+    gap.mean_visible = rows ? double(gap.bits) / rows : 0.0;
     return gap;
 }
 

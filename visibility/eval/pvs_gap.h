@@ -4,7 +4,8 @@
 //   excess bits   pairs the PVS has beyond the reference: an upper bound of the overdraw it causes
 //                 (against a sampled reference, also the true pairs the sampling has not found).
 // A null PVS is "none": every row full. A missing row (Pvs::row_missing) is full, as culling
-// reads it. Both PVSs must have the same region count (std::invalid_argument otherwise).
+// reads it. Both PVSs must have the same rows and regions (std::invalid_argument otherwise); a
+// grid zone's rows are its view cells.
 #pragma once
 
 #include "visibility/pvs.h"
@@ -19,7 +20,7 @@ struct PvsGap {
     uint64_t missing_bits = 0;
     uint64_t excess_bits = 0;
     uint32_t rows_missing_bits = 0; // rows with at least one missing bit
-    double mean_visible = 0.0;      // bits / regions
+    double mean_visible = 0.0;      // bits / rows
 };
 
 PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference);

@@ -7,6 +7,7 @@
 #include "visibility/portal/region_clusters.h"
 
 #include <chrono>
+#include <stdexcept>
 #include <cstdio>
 
 namespace pvs {
@@ -53,6 +54,9 @@ VisParams vis_params(const MethodSettings& s, VisParams::Method method)
 
 PortalSet zone_portals(const Zone& zone, const MethodSettings& s)
 {
+    if (!zone.tree.exists() || zone.view_grid)
+        throw std::invalid_argument("portal vis needs a BSP tree, and " + zone.source.path +
+                                    " has none (an OBJ level: its cells are a grid)");
     PortalOptions options;
     options.sky = s.sky;
     return build_zone_portals(zone, options);

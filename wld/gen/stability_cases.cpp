@@ -321,7 +321,7 @@ StabilityCase make_stability_case(std::string_view name)
     out.name = std::string(name);
     for (size_t b = 0; b < spec.boxes.size(); ++b) {
         const BoxSpec& box = spec.boxes[b];
-        glm::ivec3 lo, hi;
+        glm::ivec3 lo(0), hi(0);
         for (int a = 0; a < 3; ++a) {
             lo[a] = line_index(axes.lines[size_t(a)], box.lo[a]);
             hi[a] = line_index(axes.lines[size_t(a)], box.hi[a]);

@@ -1,0 +1,82 @@
+#include "wld/hepvs/hepvs_zone.h"
+
+#include "visibility/bit_row.h"
+#include "visibility/file_error.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace pvs {
+
+void attach_hepvs(Zone& zone, const HepvsFile& hepvs, const std::string& hepvs_path, float grid_size)
+{
+    if (zone.region_names.size() != zone.region_count())
+        throw FileError(hepvs_path, 0, "the zone it is attached to has no object names to match");
+    std::unordered_map<std::string, uint32_t> region_of;
+    for (uint32_t r = 0; r < zone.region_count(); ++r)
+        region_of.try_emplace(zone.region_names[r], r); // the first object of a name wins
+    std::vector<int64_t> column(hepvs.names.size(), -1);
+    size_t unknown = 0;
+    for (size_t i = 0; i < hepvs.names.size(); ++i) {
+        const auto it = region_of.find(hepvs.names[i]);
+        if (it != region_of.end())
+            column[i] = it->second;
+        else
+            ++unknown;
+    }
+    if (!hepvs.names.empty() && unknown == hepvs.names.size())
+        throw FileError(hepvs_path, kHepvsHeaderBytes, "none of its " + std::to_string(hepvs.names.size()) +
+                                                           " object names is an object of " + zone.source.path);
+    ViewGrid grid;
+    grid.min = hepvs.min;
+    grid.cell_size = hepvs.cell_size;
+    grid.counts = hepvs.counts;
+    grid.grid_size = grid_size;
+    zone.baked_pvs = Pvs::build_rows(uint32_t(hepvs.cell_count()), uint32_t(zone.region_count()),
+                                     [&](uint32_t cell, std::span<uint64_t> row) {
+                                         for (uint16_t index : hepvs.cell(cell))
+                                             if (column[index] >= 0)
+                                                 bits::set(row, size_t(column[index]));
+                                         return true;
+                                     });
+    zone.view_grid = grid;
+    char note[320];
+    std::snprintf(note, sizeof note, "PVS from %s (HateEngine .hepvs, version %u): %u x %u x %u cells of %g grid units, %g OBJ units to a grid unit",
+                  hepvs_path.c_str(), hepvs.version, hepvs.counts.x, hepvs.counts.y, hepvs.counts.z,
+                  double(hepvs.cell_size), double(grid_size));
+    zone.source.notes.push_back(note);
+    if (unknown > 0)
+        zone.source.notes.push_back(std::to_string(unknown) + " of its object names are not in the OBJ (ignored)");
+    for (const std::string& w : hepvs.warnings)
+        zone.source.notes.push_back(hepvs_path + ": " + w);
+}
+
+HepvsFile hepvs_from_zone(const Zone& zone)
+{
+    if (!zone.view_grid || !zone.baked_pvs || zone.baked_pvs->row_count() != zone.view_grid->cell_count() ||
+        zone.baked_pvs->region_count() != zone.region_count())
+        throw std::invalid_argument(".hepvs: the zone has no view grid with one PVS row per cell");
+    if (zone.region_names.size() != zone.region_count())
+        throw std::invalid_argument(".hepvs: the zone's objects have no names");
+    if (zone.region_count() > 0xffff)
+        throw std::invalid_argument(".hepvs: more than 65535 objects");
+    HepvsFile h;
+    h.min = zone.view_grid->min;
+    h.cell_size = zone.view_grid->cell_size;
+    h.counts = zone.view_grid->counts;
+    h.names = zone.region_names;
+    h.cell_offsets.push_back(0);
+    std::vector<uint64_t> row(zone.baked_pvs->words_per_row());
+    for (uint32_t c = 0; c < zone.baked_pvs->row_count(); ++c) {
+        zone.baked_pvs->decode_row(c, row);
+        bits::for_each_set(row, [&](size_t r) {
+            if (r < zone.region_count())
+                h.cell_objects.push_back(uint16_t(r));
+        });
+        h.cell_offsets.push_back(uint32_t(h.cell_objects.size()));
+    }
+    return h;
+}
+
+} // namespace pvs
