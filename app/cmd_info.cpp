@@ -69,9 +69,8 @@ void print_text(const Zone& zone, const ZoneStats& s, double load_ms)
         std::printf("  %u rows (%u missing, read as all visible), %s storage, %s\n", s.pvs.rows, s.pvs.missing_rows,
                     s.pvs.dense ? "dense" : "compressed", human_bytes(s.pvs.memory_bytes).c_str());
         const double to_percent = s.regions ? 100.0 / s.regions : 0.0;
-        std::printf(zone.view_grid ? "  visible objects per cell: mean"
-                                   : "  visible regions per region: mean %.1f (%.1f %%), min %u (%.1f %%), max %u (%.1f %%)\n",
-                    s.pvs.mean_visible, s.pvs.mean_percent, s.pvs.min_visible, s.pvs.min_visible * to_percent,
+        std::printf("  visible %s: mean %.1f (%.1f %%), min %u (%.1f %%), max %u (%.1f %%)\n",
+                    zone.view_grid ? "objects per cell" : "regions per region", s.pvs.mean_visible, s.pvs.mean_percent, s.pvs.min_visible, s.pvs.min_visible * to_percent,
                     s.pvs.max_visible, s.pvs.max_visible * to_percent);
     }
     if (!s.bounds.empty())

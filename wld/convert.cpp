@@ -3,10 +3,12 @@
 #include "visibility/geometry/split_faces.h"
 #include "wld/common/read_file.h"
 #include "wld/eq/eq_zone_writer.h"
+#include "wld/hepvs/hepvs_zone.h"
 #include "wld/obj/obj_writer.h"
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 
 namespace pvs {
@@ -40,7 +42,18 @@ std::vector<std::string> write_zone(const Zone& zone, const std::string& path, Z
 {
     if (output == ZoneOutput::Obj) {
         save_obj(zone, path);
-        return {};
+        if (!zone.baked_pvs)
+            return {"the zone has no PVS: no .hepvs written"};
+        std::filesystem::path hepvs_path(path);
+        hepvs_path.replace_extension(".hepvs");
+        const HepvsFile hepvs = zone.view_grid ? hepvs_from_zone(zone) : hepvs_over_regions(zone, kConvertHepvsCell);
+        write_whole_file(hepvs_path.string(), write_hepvs(hepvs));
+        char note[256];
+        std::snprintf(note, sizeof note, "PVS written as %s: %u x %u x %u cells of %g grid units%s",
+                      hepvs_path.filename().string().c_str(), hepvs.counts.x, hepvs.counts.y, hepvs.counts.z,
+                      double(hepvs.cell_size),
+                      zone.view_grid ? "" : " (each the union of the rows of the regions touching it)");
+        return {note};
     }
     const std::string name = std::filesystem::path(path).stem().string();
     if (faces_shared_between_regions(zone)) {

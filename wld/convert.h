@@ -15,6 +15,11 @@ namespace pvs {
 
 enum class ZoneOutput : uint8_t { S3d, Obj };
 
+// An OBJ is written with its PVS beside it as a .hepvs of the same name (wld/hepvs/hepvs_zone.h):
+// a grid zone's own grid, or for a region PVS the HateEngine grid of cells this many grid units
+// (16 OBJ units each) wide, the size of the E1M1 sample's.
+inline constexpr float kConvertHepvsCell = 8.0f;
+
 // From --to ("s3d", "obj") if given, else from the path's extension; nullopt when neither says.
 std::optional<ZoneOutput> zone_output_for(const std::string& path, const std::string& to);
 

@@ -82,17 +82,19 @@ TEST_P(StabilityCase, EveryMethodKeepsItsBound)
     for (const gen::CaseTableRow& row : table.rows) {
         EXPECT_FALSE(row.broken()) << row.case_name << " " << row.method << ": missing " << row.missing_bits
                                    << ", excess " << row.excess_bits;
-        if (row.bound == Bound::Upper)
+        if (row.bound == Bound::Upper) {
             EXPECT_EQ(row.missing_bits, 0u) << row.case_name << " " << row.method;
-        if (row.bound == Bound::Lower)
+        }
+        if (row.bound == Bound::Lower) {
             EXPECT_EQ(row.excess_bits, 0u) << row.case_name << " " << row.method;
+        }
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(All, StabilityCase, ::testing::ValuesIn(gen::stability_case_names().begin(),
                                                                     gen::stability_case_names().end()),
-                         [](const auto& info) {
-                             std::string name(info.param);
+                         [](const auto& param_info) {
+                             std::string name(param_info.param);
                              std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(ch); }, '_');
                              return name;
                          });

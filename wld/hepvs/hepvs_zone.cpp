@@ -3,6 +3,8 @@
 #include "visibility/bit_row.h"
 #include "visibility/file_error.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <unordered_map>
@@ -71,6 +73,68 @@ HepvsFile hepvs_from_zone(const Zone& zone)
     for (uint32_t c = 0; c < zone.baked_pvs->row_count(); ++c) {
         zone.baked_pvs->decode_row(c, row);
         bits::for_each_set(row, [&](size_t r) {
+            if (r < zone.region_count())
+                h.cell_objects.push_back(uint16_t(r));
+        });
+        h.cell_offsets.push_back(uint32_t(h.cell_objects.size()));
+    }
+    return h;
+}
+
+HepvsFile hepvs_over_regions(const Zone& zone, float cell_size, float grid_size)
+{
+    if (!zone.baked_pvs || !zone.baked_pvs->square() || zone.baked_pvs->region_count() != zone.region_count() ||
+        zone.view_grid)
+        throw std::invalid_argument(".hepvs: the zone has no PVS over its regions");
+    if (!(cell_size > 0.0f) || !(grid_size > 0.0f) || zone.mesh.positions.empty())
+        throw std::invalid_argument(".hepvs: a positive cell size and grid size, and some geometry, are needed");
+    if (zone.region_count() > 0xffff)
+        throw std::invalid_argument(".hepvs: more than 65535 objects");
+    ViewGrid grid;
+    grid.cell_size = cell_size;
+    grid.grid_size = grid_size;
+    Aabb space; // grid space
+    for (const glm::vec3& p : zone.mesh.positions)
+        space.grow(grid.to_grid_space(p));
+    grid.min = space.min;
+    for (int a = 0; a < 3; ++a) {
+        const float cells = std::ceil((space.max[a] - space.min[a]) / cell_size);
+        if (!(cells >= 1.0f) || cells > 65535.0f)
+            throw std::invalid_argument(".hepvs: the grid needs 1 to 65535 cells a side");
+        grid.counts[a] = uint32_t(cells);
+    }
+    const size_t words = zone.baked_pvs->words_per_row();
+    std::vector<uint64_t> cells(grid.cell_count() * words, 0), row(words);
+    for (uint32_t r = 0; r < zone.region_count(); ++r) {
+        zone.baked_pvs->decode_row(r, row);
+        bits::set(row, r); // the camera's own region is drawn
+        Aabb g; // the region's box in grid space
+        g.grow(grid.to_grid_space(zone.regions[r].bounds.min));
+        g.grow(grid.to_grid_space(zone.regions[r].bounds.max));
+        glm::uvec3 lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            const float first = std::floor((g.min[a] - grid.min[a]) / cell_size);
+            const float last = std::floor((g.max[a] - grid.min[a]) / cell_size);
+            lo[a] = uint32_t(std::clamp(first, 0.0f, float(grid.counts[a] - 1)));
+            hi[a] = uint32_t(std::clamp(last, 0.0f, float(grid.counts[a] - 1)));
+        }
+        for (uint32_t x = lo.x; x <= hi.x; ++x)
+            for (uint32_t y = lo.y; y <= hi.y; ++y)
+                for (uint32_t z = lo.z; z <= hi.z; ++z) {
+                    uint64_t* cell = cells.data() + size_t(grid.index(x, y, z)) * words;
+                    for (size_t w = 0; w < words; ++w)
+                        cell[w] |= row[w];
+                }
+    }
+    HepvsFile h;
+    h.min = grid.min;
+    h.cell_size = cell_size;
+    h.counts = grid.counts;
+    for (uint32_t r = 0; r < zone.region_count(); ++r)
+        h.names.push_back(r < zone.region_names.size() ? zone.region_names[r] : "region_" + std::to_string(r));
+    h.cell_offsets.push_back(0);
+    for (uint64_t c = 0; c < grid.cell_count(); ++c) {
+        bits::for_each_set(std::span<const uint64_t>(cells.data() + c * words, words), [&](size_t r) {
             if (r < zone.region_count())
                 h.cell_objects.push_back(uint16_t(r));
         });

@@ -26,4 +26,12 @@ void attach_hepvs(Zone& zone, const HepvsFile& hepvs, const std::string& hepvs_p
                   float grid_size = kDefaultHepvsGridSize);
 HepvsFile hepvs_from_zone(const Zone& zone);
 
+// A region PVS (a BSP zone's, one row per region) as a .hepvs over the zone written as an OBJ
+// (obj_writer.h: one object per region, named as region_names or "region_<r>"): the baker's grid
+// (min over every vertex in OBJ space / grid_size, cells of cell_size grid units, counts rounded
+// up), and for each cell the union of the rows of every region whose bounds touch the cell: a
+// camera in that cell is in one of them, so the row is conservative (it over-covers where a
+// region's box is larger than its cell). std::invalid_argument when the zone has no region PVS.
+HepvsFile hepvs_over_regions(const Zone& zone, float cell_size, float grid_size = kDefaultHepvsGridSize);
+
 } // namespace pvs

@@ -176,7 +176,9 @@ Zone read_obj_zone(std::span<const uint8_t> bytes, const std::string& path)
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromString(text, mtl, config))
+    // tinyobjloader reads the material text only for a file with an mtllib line: give it one.
+    const bool has_mtllib = !keyword_values(text, "mtllib").empty();
+    if (!reader.ParseFromString(has_mtllib || mtl.empty() ? text : "mtllib materials.mtl\n" + text, mtl, config))
         throw FileError(path, 0, "not a Wavefront OBJ tinyobjloader can read: " + reader.Error());
 
     Zone zone;

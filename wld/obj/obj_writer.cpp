@@ -62,7 +62,7 @@ ObjExport export_obj(const Zone& zone, const std::string& base_name)
         e.obj += "\n";
     }
     for (uint32_t r = 0; r < zone.region_count(); ++r) {
-        e.obj += "o region_" + std::to_string(r) + "\n";
+        e.obj += "o " + (r < zone.region_names.size() ? zone.region_names[r] : "region_" + std::to_string(r)) + "\n";
         uint32_t current = UINT32_MAX;
         for (uint32_t f : zone.faces_of_region(r)) {
             const Face& face = mesh.faces[f];

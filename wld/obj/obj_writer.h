@@ -1,4 +1,5 @@
-// Wavefront OBJ export of a zone: one object per region ("region_<id>", the region's faces, so
+// Wavefront OBJ export of a zone: one object per region (its name where the zone has region names,
+// as an OBJ zone does, else "region_<id>"; the region's faces, so
 // per-object tools such as the HateEngine PVS baker see regions), `usemtl` per material, uvs,
 // and a companion .mtl naming each material's texture (written as 24-bit BMP next to the OBJ when the
 // material has pixels). A face listed by several regions is written in each of them.
