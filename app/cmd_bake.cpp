@@ -14,6 +14,7 @@
 #include "wld/common/read_file.h"
 #include "wld/convert.h"
 #include "wld/eq/eq_zone_reader.h"
+#include "wld/hepvs/hepvs_zone.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp29_vis_writer.h"
 #include "wld/quake/prt_file.h"
@@ -39,7 +40,7 @@ namespace pvs::app {
 
 namespace {
 
-enum class InputFormat { QuakeBsp, EqS3d };
+enum class InputFormat { QuakeBsp, EqS3d, ObjHepvs };
 
 struct Input {
     InputFormat format;
@@ -47,8 +48,14 @@ struct Input {
     Zone zone;
 };
 
-const char* format_name(InputFormat f) { return f == InputFormat::QuakeBsp ? "Quake BSP 29" : "EverQuest S3D"; }
-const char* format_extension(InputFormat f) { return f == InputFormat::QuakeBsp ? ".bsp" : ".s3d"; }
+const char* format_name(InputFormat f)
+{
+    return f == InputFormat::QuakeBsp ? "Quake BSP 29" : f == InputFormat::EqS3d ? "EverQuest S3D" : "OBJ + .hepvs";
+}
+const char* format_extension(InputFormat f)
+{
+    return f == InputFormat::QuakeBsp ? ".bsp" : f == InputFormat::EqS3d ? ".s3d" : ".hepvs";
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
@@ -72,7 +79,10 @@ std::string lowercase_extension(const std::string& path)
 
 // clustered and reference run through the method registry; portal-fast and portal-full keep
 // this command's own path (portal files in and out, box clusters on request).
-bool uses_registry(const BakeOptions& o) { return o.method == "clustered" || o.method == "reference"; }
+bool uses_registry(const BakeOptions& o)
+{
+    return o.method == "clustered" || o.method == "reference" || o.method == "raster";
+}
 
 // The argument errors, each a sentence; empty when the options are usable.
 std::string check_options(const BakeOptions& o)
@@ -82,7 +92,11 @@ std::string check_options(const BakeOptions& o)
     if (o.output.empty())
         return "no output file: give -o OUT (.bsp for a Quake map, .s3d for an EverQuest zone)";
     if (const VisMethod* m = find_vis_method(o.method); !m || !m->bakes)
-        return "--method must be portal-fast, portal-full, clustered or reference, not '" + o.method + "'";
+        return "--method must be portal-fast, portal-full, clustered, reference or raster, not '" + o.method + "'";
+    if (o.method == "raster" && (o.resolution < 1 || o.resolution > 4096))
+        return "--resolution must be 1..4096, not " + std::to_string(o.resolution);
+    if (!(o.step >= 0.0f) || !(o.cell >= 0.0f) || !(o.grid_size > 0.0f))
+        return "--step and --cell must be 0 or more and --grid-size more than 0";
     if (uses_registry(o) && !o.prt_in.empty())
         return "--prt: " + o.method + " does not read portals (it builds what it needs from the tree)";
     if (uses_registry(o) && o.clusters != "none")
@@ -98,8 +112,31 @@ std::string check_options(const BakeOptions& o)
     return {};
 }
 
-Input load_input(const std::string& path)
+// An OBJ level (or a .hepvs with its OBJ): the grid is the .hepvs's unless --cell asks for
+// another, else HateEngine's cell of 8 grid units over the level's vertices.
+Input load_obj_input(const BakeOptions& o)
 {
+    ZoneLoadOptions load;
+    load.hepvs = o.hepvs;
+    load.grid_size = o.grid_size;
+    Input in{InputFormat::ObjHepvs, {}, load_zone(o.input, load)};
+    if (!in.zone.view_grid || o.cell > 0.0f) {
+        const float cell = o.cell > 0.0f ? o.cell : kConvertHepvsCell;
+        const std::optional<ViewGrid> grid = grid_over_points(in.zone.mesh.positions, cell, o.grid_size);
+        if (!grid)
+            throw FileError(o.input, 0, "no view grid of " + std::to_string(cell) + " grid units fits this level");
+        in.zone.view_grid = *grid;
+        in.zone.baked_pvs.reset(); // rows of another grid
+    }
+    return in;
+}
+
+Input load_input(const BakeOptions& o)
+{
+    const std::string& path = o.input;
+    const std::string ext = lowercase_extension(path);
+    if (ext == ".obj" || ext == ".hepvs")
+        return load_obj_input(o);
     Input in{InputFormat::QuakeBsp, read_whole_file(path), {}};
     if (quake::looks_like_bsp29(in.bytes)) {
         in.zone = quake::load_bsp29(in.bytes, path);
@@ -108,7 +145,7 @@ Input load_input(const std::string& path)
         in.zone = eq::load_eq_zone(in.bytes, path);
     } else {
         load_zone(path); // throws the loader's message for formats it recognises but cannot read
-        throw FileError(path, 0, "bake writes Quake BSP 29 and EverQuest S3D files only");
+        throw FileError(path, 0, "bake writes Quake BSP 29, EverQuest S3D and OBJ + .hepvs only");
     }
     return in;
 }
@@ -172,6 +209,15 @@ struct BakeRun {
 
 void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
 {
+    if (in.format == InputFormat::ObjHepvs) {
+        Zone zone = in.zone;
+        zone.baked_pvs = pvs;
+        const HepvsFile hepvs = hepvs_from_zone(zone);
+        write_whole_file(o.output, write_hepvs(hepvs));
+        std::fprintf(err, "wrote %s: %u x %u x %u cells, %zu objects\n", o.output.c_str(), hepvs.counts.x,
+                     hepvs.counts.y, hepvs.counts.z, hepvs.names.size());
+        return;
+    }
     if (in.format == InputFormat::QuakeBsp) {
         quake::Bsp29VisStats stats;
         write_whole_file(o.output, quake::write_bsp29_vis(in.bytes, pvs, o.input, &stats));
@@ -322,6 +368,10 @@ MethodSettings method_settings(const BakeOptions& o)
     settings.target_checks = o.target_checks;
     settings.samples = o.samples;
     settings.seed = o.seed;
+    settings.raster_resolution = o.resolution;
+    settings.raster_points = o.points;
+    settings.raster_step = o.step;
+    settings.cull_back_faces = o.cull_back_faces;
     return settings;
 }
 
@@ -348,6 +398,9 @@ bool bake_with_method(const BakeOptions& o, const Input& in, Pvs& pvs, MethodRun
     if (run.cancelled)
         return false;
     pvs = std::move(*run.pvs);
+    if (o.method == "raster")
+        std::fprintf(err, "note: the raster PVS is a sample (what the rendered points saw): a camera between the "
+                          "points can see more; denser sampling (--step, --points, --resolution) only adds\n");
     if (o.method == "reference")
         std::fprintf(err, "warning: the reference is a lower bound (only sight lines it traced): culling with it can "
                           "pop where a line it did not find would have shown a region; use it to judge other PVSs\n");
@@ -407,11 +460,11 @@ void write_portal_file(const std::string& path, const Zone& zone, const BakeRun&
 int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
 {
     const auto load_start = std::chrono::steady_clock::now();
-    const Input in = load_input(o.input);
+    const Input in = load_input(o);
     const double load_seconds = seconds_since(load_start);
     if (lowercase_extension(o.output) != format_extension(in.format)) {
         std::fprintf(err,
-                     "pvscope: error: '%s' is in the %s format and bake writes it back in the same format, so the output "
+                     "pvscope: error: '%s' is in the %s format and bake writes its PVS in the same format, so the output "
                      "must end in %s, not '%s' (to change the format, run `pvscope convert` on the result)\n",
                      o.input.c_str(), format_name(in.format), format_extension(in.format), o.output.c_str());
         return kExitBadArguments;
@@ -461,14 +514,17 @@ void register_bake_command(CLI::App& app, int& exit_code)
 {
     auto o = std::make_shared<BakeOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "bake", "Compute a PVS (portal vis, clustered, or the sampled reference) and write the zone back in its own format (.bsp: new "
-                "visdata, other lumps unchanged; .s3d: new VISLISTs). Ctrl-C cancels and writes nothing.");
-    cmd->add_option("file", o->input, "Zone file (Quake .bsp or EverQuest .s3d)")->required();
-    cmd->add_option("-o,--output", o->output, "Output file, in the input's format (.bsp or .s3d)")->required();
+        "bake", "Compute a PVS (portal vis, clustered, the sampled reference, or raster cube maps) and write it back in "
+                "the zone's own format (.bsp: new visdata, other lumps unchanged; .s3d: new VISLISTs; an OBJ level: "
+                "a .hepvs). Ctrl-C cancels and writes nothing.");
+    cmd->add_option("file", o->input, "Zone file (Quake .bsp, EverQuest .s3d, or an OBJ level / its .hepvs)")->required();
+    cmd->add_option("-o,--output", o->output, "Output file, in the input's format (.bsp, .s3d; .hepvs for an OBJ)")
+        ->required();
     cmd->add_option("--method", o->method, "portal-fast (base vis only, loose), portal-full (clipped flow), "
-                                           "clustered (portal-full over clusters of regions) or reference (sampled "
-                                           "sight lines: a lower bound, for judging other PVSs)")
-        ->check(CLI::IsMember({"portal-fast", "portal-full", "clustered", "reference"}))
+                                           "clustered (portal-full over clusters of regions), reference (sampled "
+                                           "sight lines: a lower bound, for judging other PVSs) or raster (cube "
+                                           "maps rendered from points in each cell, as HateEngine's baker)")
+        ->check(CLI::IsMember({"portal-fast", "portal-full", "clustered", "reference", "raster"}))
         ->capture_default_str();
     cmd->add_option("--level", o->level, "portal-full: separating-plane test level 0..4")
         ->check(CLI::Range(0, 4))
@@ -495,8 +551,22 @@ void register_bake_command(CLI::App& app, int& exit_code)
                                              "doubling adds under 0.1% of the bits, up to 8192: about 30 s on "
                                              "e1m1 with 2 cores)")
         ->capture_default_str();
-    cmd->add_option("--seed", o->seed, "reference: the sampling seed (the same seed gives the same PVS)")
+    cmd->add_option("--seed", o->seed, "reference, raster: the sampling seed (the same seed gives the same PVS)")
         ->capture_default_str();
+    cmd->add_option("--resolution", o->resolution, "raster: pixels per cube face side")->capture_default_str();
+    cmd->add_option("--points", o->points, "raster over regions: sample points in each region")->capture_default_str();
+    cmd->add_option("--step", o->step, "raster over a grid: lattice step in grid units (HateEngine's -s; 1 with "
+                                       "--cell 8 is its 1 + 8^3 points a cell); 0: each cell's centre only")
+        ->capture_default_str();
+    cmd->add_option("--back-faces", o->cull_back_faces, "raster: cull faces seen from behind (true, as the "
+                                                         "HateEngine baker) or draw them")
+        ->capture_default_str();
+    cmd->add_option("--cell", o->cell, "OBJ level: view cells of this many grid units (0: the .hepvs's grid, "
+                                       "else 8)")
+        ->capture_default_str();
+    cmd->add_option("--grid-size", o->grid_size, "OBJ level: OBJ units per grid unit (HateEngine's -g)")
+        ->capture_default_str();
+    cmd->add_option("--hepvs", o->hepvs, "OBJ level: its .hepvs when not the one of the same name beside it");
     cmd->add_option("--prt", o->prt_in, "Read the portals from this PRT1 file (leaf k = region k; PRT2 / PRT1-AM: "
                                         "baked over the file's clusters) instead of building them from the BSP tree")
         ->check(CLI::ExistingFile);

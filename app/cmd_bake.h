@@ -51,7 +51,18 @@ struct BakeOptions {
     std::string prt_out;                // also write the portals used (PRT1, or PRT2 over clusters)
     std::string report;                 // JSON report path, "-" for stdout
     uint64_t samples = 0;               // reference: lines per region at most (0: until converged)
-    uint64_t seed = 1;                  // reference: sampling seed
+    uint64_t seed = 1;                  // reference and raster: sampling seed
+    // raster: pixels per cube face side, points per region (region cells), lattice step in grid
+    // units (grid cells; 0 = centre only), back faces drawn or not.
+    uint32_t resolution = 64;
+    uint32_t points = 16;
+    float step = 0.0f;
+    bool cull_back_faces = true;
+    // OBJ levels: the view grid's cell in grid units (0: the .hepvs's grid, else 8) and the OBJ
+    // units per grid unit; the input's .hepvs when not beside it.
+    float cell = 0.0f;
+    float grid_size = 16.0f;
+    std::string hepvs;
 };
 
 // Runs the bake; messages and progress go to `err`. `cancel`, when given, is polled while the

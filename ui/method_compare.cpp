@@ -58,6 +58,10 @@ private:
 // 12 minutes on 2 cores, against 2 s at level 1).
 constexpr int kLowestComparedLevel = 1;
 
+// The raster baker's points on the chart: (pixels per cube face side, points per region), from
+// coarse to dense, a curve rather than one point (its two knobs).
+constexpr std::pair<uint32_t, uint32_t> kRasterCurve[] = {{32, 4}, {64, 8}, {64, 32}, {128, 32}};
+
 std::vector<std::string> all_methods()
 {
     std::vector<std::string> names;
@@ -175,6 +179,16 @@ std::vector<CompareEntry> compare_entries(const std::string& name, const Compare
     if (!method)
         return {};
     const MethodSettings base = base_settings(options);
+    if (name == "raster") { // its knobs as a curve: pixels and points per cell
+        std::vector<CompareEntry> entries;
+        for (const auto& [resolution, points] : kRasterCurve) {
+            CompareEntry e{name, base};
+            e.settings.raster_resolution = resolution;
+            e.settings.raster_points = points;
+            entries.push_back(e);
+        }
+        return entries;
+    }
     if (name != "portal-full")
         return {{name, base}};
     std::vector<CompareEntry> entries;

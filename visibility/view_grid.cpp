@@ -1,5 +1,6 @@
 #include "visibility/view_grid.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pvs {
@@ -29,6 +30,26 @@ Aabb ViewGrid::cell_bounds(uint32_t cell) const
     box.grow(glm::vec3(lo.x, -lo.z, lo.y));
     box.grow(glm::vec3(hi.x, -hi.z, hi.y));
     return box;
+}
+
+std::optional<ViewGrid> grid_over_points(std::span<const glm::vec3> zone_points, float cell_size, float grid_size)
+{
+    if (zone_points.empty() || !(cell_size > 0.0f) || !(grid_size > 0.0f))
+        return std::nullopt;
+    ViewGrid grid;
+    grid.cell_size = cell_size;
+    grid.grid_size = grid_size;
+    Aabb space;
+    for (const glm::vec3& p : zone_points)
+        space.grow(grid.to_grid_space(p));
+    grid.min = space.min;
+    for (int a = 0; a < 3; ++a) {
+        const float cells = std::max(1.0f, std::ceil((space.max[a] - space.min[a]) / cell_size));
+        if (!(cells <= 65535.0f))
+            return std::nullopt;
+        grid.counts[a] = uint32_t(cells);
+    }
+    return grid;
 }
 
 } // namespace pvs

@@ -19,6 +19,8 @@
 #include "visibility/math/aabb.h"
 
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <glm/ext/vector_uint3.hpp>
 #include <glm/vec3.hpp>
 
@@ -41,5 +43,10 @@ struct ViewGrid {
     // A cell's box in zone space.
     Aabb cell_bounds(uint32_t cell) const;
 };
+
+// The HateEngine baker's grid over points in zone space (a zone's vertices): min over the points
+// in grid space, cells of cell_size grid units, counts rounded up (at least 1 each). Returns
+// nullopt when there are no points, a size is not positive, or a side needs over 65535 cells.
+std::optional<ViewGrid> grid_over_points(std::span<const glm::vec3> zone_points, float cell_size, float grid_size);
 
 } // namespace pvs

@@ -5,6 +5,7 @@
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
 #include "visibility/portal/region_clusters.h"
+#include "visibility/raster/raster_vis.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -153,6 +154,37 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
     return run;
 }
 
+std::string raster_label(const MethodSettings& s)
+{
+    return format("res=%u points=%u step=%g", s.raster_resolution, s.raster_points, double(s.raster_step));
+}
+
+MethodRun run_raster(const Zone& zone, const MethodSettings& s)
+{
+    RasterParams params;
+    params.raster.resolution = s.raster_resolution;
+    params.raster.cull_back_faces = s.cull_back_faces;
+    params.step = s.raster_step;
+    params.points_per_region = s.raster_points;
+    params.seed = s.seed;
+    params.threads = s.threads;
+    params.progress = s.progress;
+    RasterReport report;
+    Pvs pvs = zone.view_grid ? bake_raster_grid(zone, *zone.view_grid, params, &report)
+                             : bake_raster_regions(zone, params, &report);
+    MethodRun run;
+    run.seconds = report.seconds;
+    run.cancelled = report.cancelled;
+    run.peak_bytes_estimate = size_t(report.threads) * 7 * size_t(s.raster_resolution) * s.raster_resolution * 8 +
+                              pvs.memory_bytes();
+    run.summary = format("raster: %s points in %s %s, %ux%u per cube face, mean %.1f visible, %.2f s on %u threads",
+                         std::to_string(report.points).c_str(), std::to_string(report.cells).c_str(),
+                         zone.view_grid ? "grid cells" : "regions", s.raster_resolution, s.raster_resolution,
+                         report.mean_visible, report.seconds, report.threads);
+    run.pvs = std::move(pvs);
+    return run;
+}
+
 constexpr VisMethod kMethods[] = {
     {"file", "the PVS stored in the zone file", Bound::Unknown, false, run_file, no_label},
     {"none", "no PVS: the frustum only", Bound::Everything, false, run_none, no_label},
@@ -163,6 +195,8 @@ constexpr VisMethod kMethods[] = {
      run_clustered, full_label},
     {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true,
      run_reference, reference_label},
+    {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop",
+     Bound::Lower, true, run_raster, raster_label},
 };
 
 } // namespace

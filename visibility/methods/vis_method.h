@@ -10,6 +10,9 @@
 //   clustered    portal-full over clusters of regions (cluster_vis.h): box clusters where the
 //                regions are boxes, else BSP subtree clusters; looser, conservative
 //   reference    sampled sight lines through the tree (reference/reference_vis.h): a lower bound
+//   raster       cube maps rendered from sample points in each cell (raster/raster_vis.h): a
+//                lower bound at its density; the cells are the zone's view grid (OBJ + .hepvs)
+//                or its regions
 //
 // Each entry says which side of the truth it sits on (Bound), so compare can say which failures
 // matter: an upper bound must miss nothing the reference finds, a lower bound may pop. Bakes run
@@ -50,6 +53,12 @@ struct MethodSettings {
     // reference: lines per region at most (0: the default, until converged), and the seed.
     uint64_t samples = 0;
     uint64_t seed = 1;
+    // raster: pixels per cube face side, sample points per region (region cells), lattice step in
+    // grid units (grid cells; 0 = each cell's centre only), and the back-face rule.
+    uint32_t raster_resolution = 64;
+    uint32_t raster_points = 16;
+    float raster_step = 0.0f;
+    bool cull_back_faces = true;
     std::function<bool(double fraction)> progress;
     std::function<void(const ReferenceRound& round, const Pvs& rows)> on_reference_round;
 };

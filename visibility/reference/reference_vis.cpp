@@ -1,5 +1,7 @@
 #include "visibility/reference/reference_vis.h"
 
+#include "visibility/parallel_items.h"
+
 #include "visibility/portal/portalize.h"
 #include "visibility/reference/frontier.h"
 #include "visibility/reference/line_witness.h"
@@ -125,61 +127,13 @@ void sample_frontier(Shared& s, FrontierPair pair, uint64_t first, uint64_t end,
     s.frontier_found.fetch_add(joined ? 1 : 0, std::memory_order_relaxed);
 }
 
-// Runs work(item, scratch) for items [0, count) on `threads` workers that take items from a shared
-// counter, while the calling thread calls progress(fraction()) about every 50 ms. Returns false
-// when progress cancelled (the workers stop after their current item).
+// parallel_items (parallel_items.h) with the reference's stop flag and scratch.
 template <class Work>
 bool parallel_items(Shared& shared, size_t count, unsigned threads, const std::function<bool(double)>& progress,
                     const std::function<double()>& fraction, Work&& work)
 {
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-        Scratch scratch;
-        for (;;) {
-            if (shared.stop.load(std::memory_order_relaxed))
-                return;
-            const size_t item = next.fetch_add(1, std::memory_order_relaxed);
-            if (item >= count)
-                return;
-            work(item, scratch);
-        }
-    };
-    if (threads <= 1 && !progress) {
-        worker();
-        return true;
-    }
-    std::mutex mutex;
-    std::condition_variable ended;
-    unsigned finished = 0;
-    std::vector<std::thread> workers;
-    for (unsigned t = 0; t < threads; ++t)
-        workers.emplace_back([&] {
-            worker();
-            const std::lock_guard lock(mutex);
-            ++finished;
-            ended.notify_all();
-        });
-    bool cancelled = false;
-    try {
-        std::unique_lock lock(mutex);
-        while (finished < threads) {
-            lock.unlock();
-            if (progress && !cancelled && !progress(fraction())) {
-                shared.stop.store(true);
-                cancelled = true;
-            }
-            lock.lock();
-            ended.wait_for(lock, std::chrono::milliseconds(50), [&] { return finished == threads; });
-        }
-    } catch (...) {
-        shared.stop.store(true);
-        for (std::thread& w : workers)
-            w.join();
-        throw;
-    }
-    for (std::thread& w : workers)
-        w.join();
-    return !cancelled;
+    return pvs::parallel_items(count, threads, progress, fraction, shared.stop, [] { return Scratch{}; },
+                               std::forward<Work>(work));
 }
 
 } // namespace

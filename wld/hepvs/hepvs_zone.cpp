@@ -90,19 +90,10 @@ HepvsFile hepvs_over_regions(const Zone& zone, float cell_size, float grid_size)
         throw std::invalid_argument(".hepvs: a positive cell size and grid size, and some geometry, are needed");
     if (zone.region_count() > 0xffff)
         throw std::invalid_argument(".hepvs: more than 65535 objects");
-    ViewGrid grid;
-    grid.cell_size = cell_size;
-    grid.grid_size = grid_size;
-    Aabb space; // grid space
-    for (const glm::vec3& p : zone.mesh.positions)
-        space.grow(grid.to_grid_space(p));
-    grid.min = space.min;
-    for (int a = 0; a < 3; ++a) {
-        const float cells = std::ceil((space.max[a] - space.min[a]) / cell_size);
-        if (!(cells >= 1.0f) || cells > 65535.0f)
-            throw std::invalid_argument(".hepvs: the grid needs 1 to 65535 cells a side");
-        grid.counts[a] = uint32_t(cells);
-    }
+    const std::optional<ViewGrid> made = grid_over_points(zone.mesh.positions, cell_size, grid_size);
+    if (!made)
+        throw std::invalid_argument(".hepvs: the grid needs 1 to 65535 cells a side");
+    const ViewGrid& grid = *made;
     const size_t words = zone.baked_pvs->words_per_row();
     std::vector<uint64_t> cells(grid.cell_count() * words, 0), row(words);
     for (uint32_t r = 0; r < zone.region_count(); ++r) {

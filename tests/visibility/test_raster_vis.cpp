@@ -1,0 +1,157 @@
+// The raster baker (visibility/raster/): cube maps rendered on the CPU from points in each cell.
+//  - known visibility on a hand-made OBJ of two closed rooms with a wall between: a cell inside a
+//    room sees that room's object only; a cell in the rock between them sees both (through the
+//    walls' culled backs, or the backs themselves when drawn); and the
+//    failure of the HateEngine lattice, built on it: its points on a cell's far faces sit on the
+//    wall at x = 100 and see the other room through it;
+//  - a lower bound: on a generated zone every raster row lies inside portal-full's (an upper
+//    bound), and on every stability case nothing outside the truth (test_stability_cases.cpp);
+//  - denser sampling only adds: more points per region, or a lattice step halved;
+//  - deterministic for any thread count; cancel stops it.
+#include "visibility/bit_row.h"
+#include "visibility/eval/pvs_gap.h"
+#include "visibility/methods/vis_method.h"
+#include "visibility/raster/raster_vis.h"
+#include "wld/gen/generate_zone.h"
+#include "wld/obj/obj_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace pvs {
+namespace {
+
+// An OBJ object: the six sides of a box (zone coordinates lo..hi) facing inward, written in the
+// OBJ's y-up axes (zone (x, y, z) is file (x, z, -y)).
+std::string box_object(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int& first_vertex)
+{
+    std::string text = "o " + name + "\n";
+    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
+                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
+    for (const glm::vec3& p : c)
+        text += "v " + std::to_string(p.x) + " " + std::to_string(p.z) + " " + std::to_string(-p.y) + "\n";
+    // Counter-clockwise seen from inside the box.
+    const int quads[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}};
+    for (const auto& q : quads)
+        text += "f " + std::to_string(first_vertex + q[0]) + " " + std::to_string(first_vertex + q[1]) + " " +
+                std::to_string(first_vertex + q[2]) + " " + std::to_string(first_vertex + q[3]) + "\n";
+    first_vertex += 8;
+    return text;
+}
+
+Zone two_rooms()
+{
+    int v = 1;
+    std::string text = box_object("room_a", {0, 0, 0}, {100, 100, 50}, v);
+    text += box_object("room_b", {110, 0, 0}, {210, 100, 50}, v); // after room_a: v counts on
+    Zone zone = read_obj_zone(std::vector<uint8_t>(text.begin(), text.end()), "two_rooms.obj");
+    // Cells of 10 units (grid size 1): x cells 0..9 in A, 10 in the wall, 11..20 in B.
+    zone.view_grid = grid_over_points(zone.mesh.positions, 10.0f, 1.0f);
+    return zone;
+}
+
+std::vector<uint32_t> row_of(const Pvs& pvs, uint32_t cell)
+{
+    std::vector<uint64_t> row(pvs.words_per_row());
+    pvs.decode_row(cell, row);
+    std::vector<uint32_t> out;
+    bits::for_each_set(row, [&](size_t r) { out.push_back(uint32_t(r)); });
+    return out;
+}
+
+TEST(RasterVis, TwoRoomsAndAWall)
+{
+    const Zone zone = two_rooms();
+    ASSERT_TRUE(zone.view_grid);
+    const ViewGrid& grid = *zone.view_grid;
+    ASSERT_EQ(grid.counts.x, 21u);
+    RasterParams params;
+    params.raster.resolution = 16;
+    params.step = 5.0f; // the centre and 8 lattice points a cell
+    params.threads = 2;
+    const Pvs with_culling = bake_raster_grid(zone, grid, params);
+    params.lattice = Lattice::HateEngine;
+    const Pvs hateengine = bake_raster_grid(zone, grid, params);
+    params.lattice = Lattice::Centred;
+    params.raster.cull_back_faces = false;
+    const Pvs both_sides = bake_raster_grid(zone, grid, params);
+    const std::vector<uint32_t> a{0}, b{1}, ab{0, 1};
+    for (uint32_t cell = 0; cell < grid.cell_count(); ++cell) {
+        const float x = grid.cell_bounds(cell).center().x;
+        SCOPED_TRACE("cell " + std::to_string(cell) + " at x " + std::to_string(x));
+        if (x < 100.0f) {
+            EXPECT_EQ(row_of(with_culling, cell), a);
+            EXPECT_EQ(row_of(both_sides, cell), a); // the room's own walls hide the other room
+            // The last cells before the wall have lattice points on it: they see room B.
+            EXPECT_EQ(row_of(hateengine, cell), x > 90.0f ? ab : a);
+        } else if (x > 110.0f) {
+            EXPECT_EQ(row_of(with_culling, cell), b);
+        } else {
+            // In the rock between the rooms: the rooms' walls turn their backs to it, so with
+            // culling the eye looks through them at the floors and far walls inside; drawn,
+            // the backs themselves are what it sees. Both rooms either way.
+            EXPECT_EQ(row_of(with_culling, cell), ab);
+            EXPECT_EQ(row_of(both_sides, cell), ab);
+        }
+    }
+}
+
+TEST(RasterVis, ALowerBoundInsidePortalFull)
+{
+    const Zone zone = gen::generate_zone({12, 5});
+    MethodSettings settings;
+    settings.threads = 2;
+    settings.raster_resolution = 32;
+    settings.raster_points = 8;
+    const MethodRun raster = find_vis_method("raster")->run(zone, settings);
+    const MethodRun full = find_vis_method("portal-full")->run(zone, settings);
+    ASSERT_TRUE(raster.pvs && full.pvs);
+    const PvsGap gap = pvs_gap(&*raster.pvs, *full.pvs);
+    EXPECT_EQ(gap.excess_bits, 0u) << "raster rows outside portal-full's";
+    EXPECT_GT(gap.bits, uint64_t(zone.region_count()) * 2) << "it sees more than each region itself";
+}
+
+TEST(RasterVis, DenserSamplingOnlyAddsAndThreadsDoNotMatter)
+{
+    const Zone zone = gen::generate_zone({10, 7});
+    RasterParams params;
+    params.raster.resolution = 24;
+    params.points_per_region = 3;
+    params.threads = 1;
+    const Pvs sparse = bake_raster_regions(zone, params);
+    params.points_per_region = 9;
+    const Pvs dense = bake_raster_regions(zone, params);
+    params.threads = 2;
+    const Pvs dense_two_threads = bake_raster_regions(zone, params);
+    EXPECT_EQ(pvs_gap(&sparse, dense).excess_bits, 0u) << "a denser bake lost a region";
+    const PvsGap same = pvs_gap(&dense_two_threads, dense);
+    EXPECT_EQ(same.missing_bits + same.excess_bits, 0u);
+
+    const Zone rooms = two_rooms();
+    RasterParams lattice;
+    lattice.raster.resolution = 16;
+    lattice.step = 10.0f; // centre + far corner
+    const Pvs coarse = bake_raster_grid(rooms, *rooms.view_grid, lattice);
+    lattice.step = 5.0f; // holds those points and more
+    const Pvs fine = bake_raster_grid(rooms, *rooms.view_grid, lattice);
+    EXPECT_EQ(pvs_gap(&coarse, fine).excess_bits, 0u);
+    EXPECT_EQ(grid_cell_points(*rooms.view_grid, 0, 5.0f).size(), 1u + 8u);
+    EXPECT_EQ(grid_cell_points(*rooms.view_grid, 0, 0.0f).size(), 1u);
+}
+
+TEST(RasterVis, CancelStops)
+{
+    const Zone zone = gen::generate_zone({10, 7});
+    RasterParams params;
+    params.raster.resolution = 16;
+    params.threads = 2;
+    params.progress = [](double) { return false; };
+    RasterReport report;
+    bake_raster_regions(zone, params, &report);
+    EXPECT_TRUE(report.cancelled);
+    EXPECT_LT(report.cells, zone.region_count());
+}
+
+} // namespace
+} // namespace pvs

@@ -1,0 +1,64 @@
+// The raster baker (`--method raster`, issue 14): a PVS by sampling, as HateEngine's pvs_baker
+// does it (quake-doom-hepvs.md §5.6), on the CPU. For each cell, cube maps are rendered from
+// sample points in it (cube_raster.h) and every face with a pixel is seen; the cell's row is the
+// union of the regions of those faces (in an OBJ zone a face belongs to one object; where a face
+// is listed by several regions, as Quake's marksurfaces list it, each of them).
+//
+// Cells are either
+//  - the view grid (bake_raster_grid): grid zones (OBJ + .hepvs), one row per cell. Sample points:
+//    the cell's centre plus a lattice of n^3 points, n = cell size / step (step 0: the centre only).
+//    Lattice::HateEngine puts them at offsets step, 2 step, ... up to the cell size from the
+//    cell's min corner, as the baker does: its last layer lies on the cell's far faces, and where
+//    a wall lies on a cell boundary (levels built on a grid) the eye sits on the wall and sees
+//    through it (the raster test's two rooms show it). Lattice::Centred (the default) puts them at
+//    offsets (i - 1/2) step, the centres of n^3 equal boxes, never on a cell face;
+//  - or the regions (bake_raster_regions, zones with a tree): points_per_region points drawn
+//    uniformly in each region's volume (reference/region_sampler.h, the reference's sampler),
+//    keeping those with open space twice the near distance away along each axis (an eye nearer a
+//    wall sees through it, as no camera can), so raster, portal and reference PVSs of one zone
+//    compare row for row. Each region sees itself.
+//
+// A sample, so a lower bound of what the cell sees at that density (up to the caveat about
+// shared faces above): more points and more pixels only add. Deterministic (per-cell results,
+// fixed point sets, any thread count), progress(fraction) false cancels (the report says so and
+// the rows so far are kept).
+#pragma once
+
+#include "visibility/pvs.h"
+#include "visibility/raster/cube_raster.h"
+#include "visibility/view_grid.h"
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace pvs {
+
+enum class Lattice : uint8_t { Centred, HateEngine };
+
+struct RasterParams {
+    CubeRasterOptions raster;
+    Lattice lattice = Lattice::Centred;
+    float step = 0.0f;               // grid cells: lattice step in grid units (HateEngine -s); 0 = centre only
+    uint32_t points_per_region = 16; // region cells
+    uint64_t seed = 1;
+    unsigned threads = 0;            // 0 = all cores
+    std::function<bool(double fraction)> progress;
+};
+
+struct RasterReport {
+    uint64_t cells = 0, points = 0; // cells baked and points rendered (six views each)
+    unsigned threads = 0;
+    double seconds = 0.0, mean_visible = 0.0;
+    bool cancelled = false;
+};
+
+// Lattice points of one grid cell in grid space: the centre first, then the lattice (above).
+std::vector<glm::vec3> grid_cell_points(const ViewGrid& grid, uint32_t cell, float step,
+                                        Lattice lattice = Lattice::Centred);
+
+Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams& params, RasterReport* report = nullptr);
+// Throws std::invalid_argument for a zone without a tree.
+Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterReport* report = nullptr);
+
+} // namespace pvs
