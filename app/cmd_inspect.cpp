@@ -29,11 +29,11 @@ struct InspectOptions {
     std::string stability_case;
 };
 
-// "membership,planes,portals,bounds,zonelines,frustum" (any subset, or "none") -> the toggles.
+// "membership,planes,portals,bounds,zonelines,frustum,cell" (any subset, or "none") -> the toggles.
 std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
 {
     ui::OverlaySettings o;
-    o.zone_lines = o.locked_frustum = false;
+    o.zone_lines = o.locked_frustum = o.view_cell = false;
     if (text == "none")
         return o;
     std::stringstream list(text);
@@ -51,6 +51,8 @@ std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
             o.zone_lines = true;
         else if (name == "frustum")
             o.locked_frustum = true;
+        else if (name == "cell")
+            o.view_cell = true;
         else
             return std::nullopt;
     }
@@ -89,7 +91,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
     cmd->add_flag("--report-fps", o->report_fps,
                   "Draw --frames frames without vsync, print the frame times (mean, median, p95, fps) and exit");
     cmd->add_option("--overlays", o->overlays,
-                    "Overlays at start: a comma list of membership, planes, portals, bounds, zonelines, frustum; "
+                    "Overlays at start: a comma list of membership, planes, portals, bounds, zonelines, frustum, cell; "
                     "or none")
         ->capture_default_str()
         ->check(CLI::Validator(

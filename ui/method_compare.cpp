@@ -60,7 +60,7 @@ constexpr int kLowestComparedLevel = 1;
 
 // The raster baker's points on the chart: (pixels per cube face side, points per region), from
 // coarse to dense, a curve rather than one point (its two knobs).
-constexpr std::pair<uint32_t, uint32_t> kRasterCurve[] = {{32, 4}, {64, 8}, {64, 32}, {128, 32}};
+constexpr std::pair<uint32_t, uint32_t> kRasterCurve[] = {{32, 4}, {64, 8}, {64, 32}};
 
 std::vector<std::string> all_methods()
 {

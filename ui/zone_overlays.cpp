@@ -139,11 +139,13 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
         paint_portals(image, scene, lines);
     if (settings.zone_lines)
         paint_zone_lines(image, scene, labels);
+    if (settings.view_cell && scene.zone->view_grid && scene.cull_cell >= 0)
+        draw_box_3d(image, lines, scene.zone->view_grid->cell_bounds(uint32_t(scene.cull_cell)), kViewCellColor);
     if (settings.locked_frustum && scene.locked)
         draw_frustum(image, scene.view, scene.cull, kLockedFrustumColor);
 }
 
-std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings)
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone)
 {
     std::vector<LegendEntry> legend;
     if (settings.split_planes) {
@@ -162,6 +164,8 @@ std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings)
         legend.push_back({"zone line (-> target)", kZoneLineColor});
     if (settings.locked_frustum)
         legend.push_back({"locked culling frustum", kLockedFrustumColor});
+    if (settings.view_cell && grid_zone)
+        legend.push_back({"the camera's view cell (its PVS row)", kViewCellColor});
     return legend;
 }
 

@@ -14,6 +14,8 @@
 //  - Zone lines: each zone line's trigger box (its region's bounds when the file gives none) and
 //    a label with its target, returned as text for the UI to draw (an Image has no font).
 //  - Locked frustum: the culling camera's view volume while it is locked (kLockedFrustumColor).
+//  - View cell (grid zones: OBJ + .hepvs): the culling camera's grid cell, whose PVS row culls
+//    (kViewCellColor); with PVS membership on, its objects are the drawn and frustum-culled boxes.
 // Overlays are drawn on top without a depth test (see overlay_fill.h); IdBuffer pictures must
 // stay face codes, so callers do not paint them.
 #pragma once
@@ -39,6 +41,7 @@ struct OverlaySettings {
     bool region_bounds = false;
     bool zone_lines = true;
     bool locked_frustum = true;
+    bool view_cell = true;
 };
 
 // A region's part in this frame's culling.
@@ -57,6 +60,7 @@ inline constexpr uint32_t kSplitPlaneColor = 0x30C0FF;
 inline constexpr uint32_t kCurrentSplitPlaneColor = 0xFFE040;
 inline constexpr uint32_t kPortalColor = 0x00FFC0;
 inline constexpr uint32_t kZoneLineColor = 0xFF00FF; // as kFlagTints' zone line
+inline constexpr uint32_t kViewCellColor = 0x60A0FF;
 inline constexpr uint32_t kSplitPlaneAlpha = 24; // a dozen planes overlap: keep each faint
 inline constexpr uint32_t kCurrentSplitPlaneAlpha = 90;
 
@@ -71,6 +75,7 @@ struct OverlayScene {
     Camera cull;                         // the culling camera
     bool locked = false;                 // cull is locked (draw its frustum)
     int32_t cull_region = -1;            // the culling camera's region
+    int32_t cull_cell = -1;              // grid zones: the culling camera's view cell
     std::span<const uint32_t> visible;   // drawn regions, ascending
     std::span<const uint32_t> after_pvs; // kept by the PVS stage, ascending
     std::span<const uint32_t> path_nodes; // node indices root -> camera leaf
@@ -96,6 +101,7 @@ struct LegendEntry {
     const char* name;
     uint32_t rgb;
 };
-std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings);
+// grid_zone: the zone has a view grid (its view cell overlay is then listed).
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone = false);
 
 } // namespace pvs::ui

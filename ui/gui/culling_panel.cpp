@@ -20,7 +20,10 @@ void draw_counts(const InspectorState& state)
     const CullStats& s = state.last_cull();
     const char* place = s.camera == CameraPlace::InRegion ? "" : s.camera == CameraPlace::InSolid ? " (in solid)"
                                                                                                  : " (outside)";
-    ImGui::Text("camera region %d%s%s", s.region, place, s.pvs_used ? "" : ", no PVS stage");
+    if (state.zone().view_grid)
+        ImGui::Text("camera view cell %d%s%s", s.cell, place, s.pvs_used ? "" : ", no PVS stage");
+    else
+        ImGui::Text("camera region %d%s%s", s.region, place, s.pvs_used ? "" : ", no PVS stage");
     ImGui::TextDisabled("left after each stage, and its time:");
     if (!ImGui::BeginTable("stages", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV))
         return;

@@ -104,6 +104,7 @@ void InspectorState::paint_overlays()
     scene.cull = cull_;
     scene.locked = locked_;
     scene.cull_region = last_cull_.region;
+    scene.cull_cell = last_cull_.cell;
     scene.visible = visible_;
     scene.after_pvs = after_pvs_;
     scene.path_nodes = path_nodes_;

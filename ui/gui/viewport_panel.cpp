@@ -32,8 +32,10 @@ void draw_overlay(const InspectorState& state, ImVec2 origin)
 {
     const CullStats& s = state.last_cull();
     char text[160];
-    std::snprintf(text, sizeof text, "region %d  |  drawn %u / %u regions  |  %s%s", s.region, s.regions_after_frustum,
-                  s.regions_total, cull_mode_name(state.cull_mode), state.locked() ? "  |  LOCKED" : "");
+    const bool grid = state.has_zone() && state.zone().view_grid;
+    std::snprintf(text, sizeof text, "%s %d  |  drawn %u / %u %s  |  %s%s", grid ? "view cell" : "region",
+                  grid ? s.cell : s.region, s.regions_after_frustum, s.regions_total, grid ? "objects" : "regions",
+                  cull_mode_name(state.cull_mode), state.locked() ? "  |  LOCKED" : "");
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 at{origin.x + 6.0f, origin.y + 4.0f};
     const ImVec2 size = ImGui::CalcTextSize(text);
@@ -58,6 +60,7 @@ void draw_overlay_menu(InspectorState& state)
         ImGui::MenuItem("Region bounds", nullptr, &o.region_bounds);
         ImGui::MenuItem("Zone lines", nullptr, &o.zone_lines);
         ImGui::MenuItem("Locked culling frustum", nullptr, &o.locked_frustum);
+        ImGui::MenuItem("View cell (OBJ + .hepvs zones)", nullptr, &o.view_cell);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Draw")) {
@@ -72,7 +75,8 @@ void draw_overlay_menu(InspectorState& state)
 // The legend, bottom left of the picture, always: the enabled overlays' colours, or a hint.
 void draw_legend(const InspectorState& state, ImVec2 origin, ImVec2 size)
 {
-    const std::vector<ui::LegendEntry> legend = ui::overlay_legend(state.overlays);
+    const std::vector<ui::LegendEntry> legend =
+        ui::overlay_legend(state.overlays, state.has_zone() && state.zone().view_grid.has_value());
     const float line = ImGui::GetTextLineHeight() + 2.0f, swatch = ImGui::GetTextLineHeight() - 2.0f;
     float width = ImGui::CalcTextSize("no overlays (Overlays menu)").x;
     for (const ui::LegendEntry& e : legend)
