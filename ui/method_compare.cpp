@@ -58,9 +58,11 @@ private:
 // 12 minutes on 2 cores, against 2 s at level 1).
 constexpr int kLowestComparedLevel = 1;
 
-// The raster baker's points on the chart: (pixels per cube face side, points per region), from
-// coarse to dense, a curve rather than one point (its two knobs).
-constexpr std::pair<uint32_t, uint32_t> kRasterCurve[] = {{32, 4}, {64, 8}, {64, 32}};
+// The raster baker's points on the chart, from coarse to dense, a curve rather than one point:
+// (pixels per cube face side, points per region) over regions, (pixels, lattice step in grid
+// units) over a view grid (step 0: each cell's centre only; 4 with HateEngine's 8-unit cells: 9).
+constexpr std::pair<uint32_t, uint32_t> kRasterRegionCurve[] = {{32, 4}, {64, 8}, {64, 32}};
+constexpr std::pair<uint32_t, float> kRasterGridCurve[] = {{32, 0.0f}, {64, 0.0f}, {64, 4.0f}};
 
 std::vector<std::string> all_methods()
 {
@@ -173,20 +175,28 @@ void measure_walk(const Zone& zone, const CompareOptions& o, CompareResult& resu
 
 } // namespace
 
-std::vector<CompareEntry> compare_entries(const std::string& name, const CompareOptions& options)
+std::vector<CompareEntry> compare_entries(const std::string& name, const CompareOptions& options, bool grid_zone)
 {
     const VisMethod* method = find_vis_method(name);
     if (!method)
         return {};
     const MethodSettings base = base_settings(options);
-    if (name == "raster") { // its knobs as a curve: pixels and points per cell
+    if (name == "raster") { // its knobs as a curve
         std::vector<CompareEntry> entries;
-        for (const auto& [resolution, points] : kRasterCurve) {
-            CompareEntry e{name, base};
-            e.settings.raster_resolution = resolution;
-            e.settings.raster_points = points;
-            entries.push_back(e);
-        }
+        if (grid_zone)
+            for (const auto& [resolution, step] : kRasterGridCurve) {
+                CompareEntry e{name, base};
+                e.settings.raster_resolution = resolution;
+                e.settings.raster_step = step;
+                entries.push_back(e);
+            }
+        else
+            for (const auto& [resolution, points] : kRasterRegionCurve) {
+                CompareEntry e{name, base};
+                e.settings.raster_resolution = resolution;
+                e.settings.raster_points = points;
+                entries.push_back(e);
+            }
         return entries;
     }
     if (name != "portal-full")
@@ -211,7 +221,7 @@ CompareResult run_compare(const Zone& zone, const CompareOptions& options)
     for (const std::string& name : options.methods.empty() ? all_methods() : options.methods) {
         if (name == "reference")
             continue; // always baked, first
-        std::vector<CompareEntry> more = compare_entries(name, options);
+        std::vector<CompareEntry> more = compare_entries(name, options, zone.view_grid.has_value());
         if (more.empty())
             throw std::invalid_argument("unknown method '" + name + "' (" + vis_method_names() + ")");
         entries.insert(entries.end(), more.begin(), more.end());

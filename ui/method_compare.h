@@ -76,7 +76,9 @@ struct CompareResult {
 
 // The entries a method name stands for (portal-full: levels 1-4 and its switches); empty for an
 // unknown name.
-std::vector<CompareEntry> compare_entries(const std::string& method, const CompareOptions& options);
+// grid_zone: the zone has a view grid (raster's knobs are then pixels and the lattice step).
+std::vector<CompareEntry> compare_entries(const std::string& method, const CompareOptions& options,
+                                          bool grid_zone = false);
 
 // Throws std::invalid_argument for an unknown method name, and what the reference throws (a zone
 // without a tree).

@@ -207,7 +207,7 @@ TEST_F(Bake, BadArgumentsAreRefusedWithAMessageAndNothingIsWritten)
     o.output = path("out.bsp");
     o.method = "portal-medium";
     EXPECT_EQ(run(o), 2);
-    EXPECT_NE(err_.find("--method must be portal-fast, portal-full, clustered or reference"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("--method must be portal-fast, portal-full, clustered, reference or raster"), std::string::npos) << err_;
 
     o.method = "portal-full";
     o.level = 7;

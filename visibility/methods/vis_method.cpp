@@ -6,6 +6,7 @@
 #include "visibility/portal/portalize.h"
 #include "visibility/portal/region_clusters.h"
 #include "visibility/raster/raster_vis.h"
+#include "visibility/reference/mesh_reference.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -125,8 +126,44 @@ MethodRun run_clustered(const Zone& zone, const MethodSettings& s)
     return run;
 }
 
+// A grid zone's reference: sight lines against the mesh (mesh_reference.h), `samples` a cell
+// (4096 by default) from max(16, samples / 256) points, reported as one round.
+MethodRun run_mesh_reference(const Zone& zone, const MethodSettings& s)
+{
+    MeshReferenceParams params;
+    params.seed = s.seed;
+    params.threads = s.threads;
+    params.progress = s.progress;
+    const uint64_t samples = s.samples ? s.samples : 4096;
+    params.points_per_cell = uint32_t(std::max<uint64_t>(16, samples / 256));
+    params.rays_per_point = uint32_t(std::max<uint64_t>(1, samples / params.points_per_cell));
+    MeshReferenceReport report;
+    Pvs pvs = bake_mesh_reference_grid(zone, *zone.view_grid, params, &report);
+    MethodRun run;
+    run.seconds = report.seconds;
+    run.cancelled = report.cancelled;
+    run.summary = format("reference (mesh rays, Embree): %s rays from %s of %s points in open space, %s of %s cells "
+                         "open, mean %.1f visible, %.2f s on %u threads",
+                         std::to_string(report.rays).c_str(), std::to_string(report.open_points).c_str(),
+                         std::to_string(report.points).c_str(), std::to_string(report.open_cells).c_str(),
+                         std::to_string(report.cells).c_str(), report.mean_visible, report.seconds, report.threads);
+    if (s.on_reference_round && !report.cancelled) {
+        ReferenceRound round;
+        round.samples_per_region = samples;
+        round.rays = report.rays;
+        round.bits = uint64_t(report.mean_visible * double(report.cells) + 0.5);
+        round.new_bits = round.bits;
+        round.seconds = report.seconds;
+        s.on_reference_round(round, pvs);
+    }
+    run.pvs = std::move(pvs);
+    return run;
+}
+
 MethodRun run_reference(const Zone& zone, const MethodSettings& s)
 {
+    if (!zone.tree.exists() && zone.view_grid)
+        return run_mesh_reference(zone, s);
     ReferenceParams params;
     params.seed = s.seed;
     params.sky = s.sky;
@@ -156,6 +193,7 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
 
 std::string raster_label(const MethodSettings& s)
 {
+    // Both sample knobs: points per region (region cells) and the lattice step (grid cells).
     return format("res=%u points=%u step=%g", s.raster_resolution, s.raster_points, double(s.raster_step));
 }
 

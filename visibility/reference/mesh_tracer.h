@@ -1,0 +1,44 @@
+// Sight lines against the mesh itself, for zones with no BSP tree (OBJ levels): Intel's Embree 3
+// (Debian's libembree-dev) in robust mode, which is watertight: a ray cannot slip between two
+// triangles that share an edge, so a wall made of triangles stops it as a solid leaf would.
+//
+// first_hit() gives the first triangle a ray meets (both sides count: a ray from outside the
+// level meets the back of a wall), its mesh face and whether the ray met its front (the side the
+// triangle's counter-clockwise order faces, the side a camera in the level sees). A point is in
+// open space (in_open_space) when rays along the six axes all meet a front face: from inside a
+// closed level every first hit is a front face; from the rock or void around it some ray meets a
+// back face or escapes. Thread-safe after construction (Embree's scene is read-only then).
+#pragma once
+
+#include "visibility/zone.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <memory>
+
+namespace pvs {
+
+class MeshTracer {
+public:
+    struct Hit {
+        bool hit = false;
+        bool front = false;
+        uint32_t face = 0;
+        float t = 0.0f;
+    };
+
+    explicit MeshTracer(const Zone& zone); // throws std::runtime_error when Embree fails
+    ~MeshTracer();
+    MeshTracer(const MeshTracer&) = delete;
+    MeshTracer& operator=(const MeshTracer&) = delete;
+
+    Hit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far) const;
+    bool in_open_space(const glm::vec3& point) const;
+    size_t triangle_count() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace pvs
