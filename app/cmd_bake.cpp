@@ -462,6 +462,12 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
     const auto load_start = std::chrono::steady_clock::now();
     const Input in = load_input(o);
     const double load_seconds = seconds_since(load_start);
+    if (in.format == InputFormat::ObjHepvs && o.method != "raster" && o.method != "reference") {
+        std::fprintf(err, "pvscope: error: '%s' is an OBJ level: %s needs a BSP tree, which it has not; bake it with "
+                          "--method raster (or reference: sight lines against the mesh)\n",
+                     o.input.c_str(), o.method.c_str());
+        return kExitBadArguments;
+    }
     if (lowercase_extension(o.output) != format_extension(in.format)) {
         std::fprintf(err,
                      "pvscope: error: '%s' is in the %s format and bake writes its PVS in the same format, so the output "
