@@ -6,6 +6,7 @@
 //    floor is not; a line from inside never meets a back face first;
 //  - the registry's "reference" on a grid zone is this one, and more rays only add.
 #include "tests/support/test_data.h"
+#include "tests/support/obj_boxes.h"
 #include "visibility/bit_row.h"
 #include "visibility/eval/pvs_gap.h"
 #include "visibility/methods/vis_method.h"
@@ -22,27 +23,10 @@
 namespace pvs::test {
 namespace {
 
-// Six inward faces of a box (zone coordinates), written y-up as OBJ files are.
-std::string closed_box(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int& first_vertex)
-{
-    std::string text = "o " + name + "\n";
-    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
-                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    for (const glm::vec3& p : c)
-        text += "v " + std::to_string(p.x) + " " + std::to_string(p.z) + " " + std::to_string(-p.y) + "\n";
-    const int quads[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}};
-    for (const auto& q : quads)
-        text += "f " + std::to_string(first_vertex + q[0]) + " " + std::to_string(first_vertex + q[1]) + " " +
-                std::to_string(first_vertex + q[2]) + " " + std::to_string(first_vertex + q[3]) + "\n";
-    first_vertex += 8;
-    return text;
-}
 
 TEST(MeshReference, TwoClosedRoomsSeeOnlyThemselves)
 {
-    int v = 1;
-    std::string text = closed_box("room_a", {0, 0, 0}, {100, 100, 50}, v);
-    text += closed_box("room_b", {110, 0, 0}, {210, 100, 50}, v);
+    const std::string text = two_closed_rooms_obj();
     Zone zone = read_obj_zone(std::vector<uint8_t>(text.begin(), text.end()), "rooms.obj");
     zone.view_grid = grid_over_points(zone.mesh.positions, 10.0f, 1.0f);
     ASSERT_TRUE(zone.view_grid);

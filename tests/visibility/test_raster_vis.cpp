@@ -8,6 +8,7 @@
 //    bound), and on every stability case nothing outside the truth (test_stability_cases.cpp);
 //  - denser sampling only adds: more points per region, or a lattice step halved;
 //  - deterministic for any thread count; cancel stops it.
+#include "tests/support/obj_boxes.h"
 #include "visibility/bit_row.h"
 #include "visibility/eval/pvs_gap.h"
 #include "visibility/methods/vis_method.h"
@@ -22,29 +23,10 @@
 namespace pvs {
 namespace {
 
-// An OBJ object: the six sides of a box (zone coordinates lo..hi) facing inward, written in the
-// OBJ's y-up axes (zone (x, y, z) is file (x, z, -y)).
-std::string box_object(const std::string& name, const glm::vec3& lo, const glm::vec3& hi, int& first_vertex)
-{
-    std::string text = "o " + name + "\n";
-    const glm::vec3 c[8] = {{lo.x, lo.y, lo.z}, {hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {lo.x, hi.y, lo.z},
-                            {lo.x, lo.y, hi.z}, {hi.x, lo.y, hi.z}, {hi.x, hi.y, hi.z}, {lo.x, hi.y, hi.z}};
-    for (const glm::vec3& p : c)
-        text += "v " + std::to_string(p.x) + " " + std::to_string(p.z) + " " + std::to_string(-p.y) + "\n";
-    // Counter-clockwise seen from inside the box.
-    const int quads[6][4] = {{0, 1, 2, 3}, {4, 7, 6, 5}, {0, 4, 5, 1}, {3, 2, 6, 7}, {0, 3, 7, 4}, {1, 5, 6, 2}};
-    for (const auto& q : quads)
-        text += "f " + std::to_string(first_vertex + q[0]) + " " + std::to_string(first_vertex + q[1]) + " " +
-                std::to_string(first_vertex + q[2]) + " " + std::to_string(first_vertex + q[3]) + "\n";
-    first_vertex += 8;
-    return text;
-}
 
 Zone two_rooms()
 {
-    int v = 1;
-    std::string text = box_object("room_a", {0, 0, 0}, {100, 100, 50}, v);
-    text += box_object("room_b", {110, 0, 0}, {210, 100, 50}, v); // after room_a: v counts on
+    const std::string text = test::two_closed_rooms_obj();
     Zone zone = read_obj_zone(std::vector<uint8_t>(text.begin(), text.end()), "two_rooms.obj");
     // Cells of 10 units (grid size 1): x cells 0..9 in A, 10 in the wall, 11..20 in B.
     zone.view_grid = grid_over_points(zone.mesh.positions, 10.0f, 1.0f);

@@ -1,6 +1,7 @@
 #include "visibility/raster/raster_vis.h"
 
 #include "visibility/bit_row.h"
+#include "visibility/eval/image_accuracy.h"
 #include "visibility/parallel_items.h"
 #include "visibility/reference/region_sampler.h"
 #include "visibility/reference/sample_sequence.h"
@@ -15,30 +16,6 @@ namespace pvs {
 
 namespace {
 
-// Face -> the regions listing it, as offsets into one list.
-struct FaceRegions {
-    std::vector<uint32_t> offsets, regions;
-};
-
-FaceRegions face_regions(const Zone& zone)
-{
-    FaceRegions out;
-    std::vector<uint32_t> count(zone.mesh.faces.size() + 1, 0);
-    for (uint32_t r = 0; r < zone.region_count(); ++r)
-        for (uint32_t f : zone.faces_of_region(r))
-            if (f < zone.mesh.faces.size())
-                ++count[f + 1];
-    for (size_t f = 1; f < count.size(); ++f)
-        count[f] += count[f - 1];
-    out.offsets = count;
-    out.regions.resize(count.back());
-    for (uint32_t r = 0; r < zone.region_count(); ++r)
-        for (uint32_t f : zone.faces_of_region(r))
-            if (f < zone.mesh.faces.size())
-                out.regions[count[f]++] = r;
-    return out;
-}
-
 struct Worker {
     CubeRaster raster;
     std::vector<uint8_t> seen; // per face
@@ -50,7 +27,7 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
                bool own_region)
 {
     const auto start = std::chrono::steady_clock::now();
-    const FaceRegions faces = face_regions(zone);
+    const FaceRegions faces = build_face_regions(zone);
     const uint32_t regions = uint32_t(zone.region_count());
     const size_t words = bits::words_for(regions);
     std::vector<uint64_t> rows(size_t(cells) * words, 0);
@@ -68,8 +45,8 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
             const std::span<uint64_t> row(rows.data() + cell * words, words);
             for (uint32_t f = 0; f < w.seen.size(); ++f)
                 if (w.seen[f])
-                    for (uint32_t k = faces.offsets[f]; k < faces.offsets[f + 1]; ++k)
-                        bits::set(row, faces.regions[k]);
+                    for (uint32_t r : faces.of(f))
+                        bits::set(row, r);
             if (own_region)
                 bits::set(row, cell);
             points.fetch_add(eyes.size(), std::memory_order_relaxed);

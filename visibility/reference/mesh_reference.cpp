@@ -1,6 +1,7 @@
 #include "visibility/reference/mesh_reference.h"
 
 #include "visibility/bit_row.h"
+#include "visibility/eval/image_accuracy.h"
 #include "visibility/parallel_items.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/sample_sequence.h"
@@ -22,20 +23,7 @@ Pvs bake_mesh_reference_grid(const Zone& zone, const ViewGrid& grid, const MeshR
 {
     const auto start = std::chrono::steady_clock::now();
     const MeshTracer tracer(zone);
-    // Face -> regions listing it.
-    std::vector<uint32_t> offsets(zone.mesh.faces.size() + 1, 0), listed;
-    for (uint32_t r = 0; r < zone.region_count(); ++r)
-        for (uint32_t f : zone.faces_of_region(r))
-            if (f < zone.mesh.faces.size())
-                ++offsets[f + 1];
-    for (size_t f = 1; f < offsets.size(); ++f)
-        offsets[f] += offsets[f - 1];
-    listed.resize(offsets.back());
-    std::vector<uint32_t> fill = offsets;
-    for (uint32_t r = 0; r < zone.region_count(); ++r)
-        for (uint32_t f : zone.faces_of_region(r))
-            if (f < zone.mesh.faces.size())
-                listed[fill[f]++] = r;
+    const FaceRegions faces = build_face_regions(zone);
 
     const auto cells = uint32_t(grid.cell_count());
     const size_t words = bits::words_for(zone.region_count());
@@ -64,8 +52,8 @@ Pvs bake_mesh_reference_grid(const Zone& zone, const ViewGrid& grid, const MeshR
                     const MeshTracer::Hit h = tracer.first_hit(p, d, std::numeric_limits<float>::infinity());
                     ++traced;
                     if (h.hit && h.front)
-                        for (uint32_t k = offsets[h.face]; k < offsets[h.face + 1]; ++k)
-                            bits::set(row, listed[k]);
+                        for (uint32_t r : faces.of(h.face))
+                            bits::set(row, r);
                 }
             }
             points.fetch_add(params.points_per_cell, std::memory_order_relaxed);

@@ -55,18 +55,25 @@ CaseSpec wall_case(float thickness)
     return c;
 }
 
-// Rooms A and B either side of an 8-unit wall with one opening D, `width` wide and full height,
-// centred at y = 64 (offset moves the whole case). All three see each other along y = 64.
+// Rooms A and B either side of the 8-unit wall x in [128, 136], joined by one opening box; the
+// case's sight lines run from A through the opening into B (the first is also the camera's).
+CaseSpec opening_case(std::string failure, BoxSpec opening, std::vector<std::pair<glm::vec3, glm::vec3>> lines)
+{
+    CaseSpec c;
+    c.failure = std::move(failure);
+    c.boxes = {plan_box("A", 0, 128, 0, 128), std::move(opening), plan_box("B", 136, 264, 0, 128)};
+    c.lines = std::move(lines);
+    c.eye = c.lines.front().first;
+    c.target = c.lines.front().second;
+    return c;
+}
+
+// An opening D `width` wide and full height, centred at y = 64 (offset moves the whole case). All
+// three boxes see each other along y = 64.
 CaseSpec crack_case(float width, const glm::vec3& offset, const std::string& failure)
 {
     const float half = width * 0.5f;
-    CaseSpec c;
-    c.failure = failure;
-    c.boxes = {plan_box("A", 0, 128, 0, 128), plan_box("D", 128, 136, 64 - half, 64 + half),
-               plan_box("B", 136, 264, 0, 128)};
-    c.lines = {{{32, 64, 48}, {232, 64, 48}}};
-    c.eye = {32, 64, 48};
-    c.target = {200, 64, 48};
+    CaseSpec c = opening_case(failure, plan_box("D", 128, 136, 64 - half, 64 + half), {{{32, 64, 48}, {232, 64, 48}}});
     for (BoxSpec& b : c.boxes) {
         b.lo += offset;
         b.hi += offset;
@@ -80,29 +87,19 @@ CaseSpec crack_case(float width, const glm::vec3& offset, const std::string& fai
     return c;
 }
 
-// A letterbox S, 0.5 units tall and the rooms' full 128-unit width, through an 8-unit wall.
+// A letterbox S, 0.5 units tall and the rooms' full 128-unit width: a long thin portal.
 CaseSpec slot_case()
 {
-    CaseSpec c;
-    c.failure = "a letterbox 0.5 units tall and 128 wide through a wall: a long thin portal";
-    c.boxes = {plan_box("A", 0, 128, 0, 128), {"S", {128, 0, 40}, {136, 128, 40.5f}}, plan_box("B", 136, 264, 0, 128)};
-    c.lines = {{{32, 64, 40.25f}, {232, 64, 40.25f}}, {{32, 8, 40.25f}, {232, 120, 40.25f}}};
-    c.eye = {32, 64, 40.25f};
-    c.target = {200, 64, 40.25f};
-    return c;
+    return opening_case("a letterbox 0.5 units tall and 128 wide through a wall: a long thin portal",
+                        {"S", {128, 0, 40}, {136, 128, 40.5f}},
+                        {{{32, 64, 40.25f}, {232, 64, 40.25f}}, {{32, 8, 40.25f}, {232, 120, 40.25f}}});
 }
 
-// A hole H 0.05 x 0.05 units through an 8-unit wall: smaller than vis's ON_EPSILON (0.1).
+// A hole H 0.05 x 0.05 units: smaller than vis's ON_EPSILON (0.1).
 CaseSpec pinhole_case()
 {
-    CaseSpec c;
-    c.failure = "a hole 0.05 x 0.05 units through a wall, smaller than the vis epsilon (0.1)";
-    c.boxes = {plan_box("A", 0, 128, 0, 128), {"H", {128, 63.975f, 47.975f}, {136, 64.025f, 48.025f}},
-               plan_box("B", 136, 264, 0, 128)};
-    c.lines = {{{32, 64, 48}, {232, 64, 48}}};
-    c.eye = {32, 64, 48};
-    c.target = {200, 64, 48};
-    return c;
+    return opening_case("a hole 0.05 x 0.05 units through a wall, smaller than the vis epsilon (0.1)",
+                        {"H", {128, 63.975f, 47.975f}, {136, 64.025f, 48.025f}}, {{{32, 64, 48}, {232, 64, 48}}});
 }
 
 // A, B and C in a row with no walls between them (the portals' edges lie in the planes of the
