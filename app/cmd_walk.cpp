@@ -135,7 +135,7 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
     line("region overdraw", region_over);
     if (o.render_time)
         line("render time (ms)", render_ms);
-    std::printf("  popping: %llu pixels confirmed (sight line open in the BSP tree) on %llu cameras; %llu raster "
+    std::printf("  popping: %llu pixels confirmed (sight line open in the BSP tree, or to the face first in the mesh) on %llu cameras; %llu raster "
                 "pixels, %llu of them cracks (sight line blocked by a wall: a gap between triangles), %llu grazing "
                 "(open by less than %.2f units past a wall's edge), %llu unlisted (seen from a kept region that "
                 "does not list the face)\n",

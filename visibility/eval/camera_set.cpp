@@ -1,11 +1,13 @@
 #include "visibility/eval/camera_set.h"
 
+#include "visibility/reference/mesh_tracer.h"
 #include "visibility/region_lookup.h"
 
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+#include <memory>
 #include <random>
 
 namespace pvs {
@@ -48,6 +50,21 @@ Camera with_lens(const Camera& lens, const glm::vec3& position, float yaw, float
     return c;
 }
 
+// For zones without a tree (OBJ levels): a point in open space (mesh_tracer.h) with nothing
+// nearer than `clearance` along the 26 directions of good_viewpoint.
+bool good_mesh_viewpoint(const MeshTracer& tracer, const glm::vec3& p, float clearance)
+{
+    if (!tracer.in_open_space(p))
+        return false;
+    for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dz = -1; dz <= 1; ++dz)
+                if ((dx || dy || dz) &&
+                    tracer.first_hit(p, glm::normalize(glm::vec3(dx, dy, dz)), clearance).hit)
+                    return false;
+    return true;
+}
+
 } // namespace
 
 std::vector<Camera> random_cameras_in_regions(const Zone& zone, size_t count, uint64_t seed, const Camera& lens)
@@ -56,6 +73,9 @@ std::vector<Camera> random_cameras_in_regions(const Zone& zone, size_t count, ui
     const Aabb box = zone.bounds();
     if (box.empty() || zone.region_count() == 0)
         return cameras;
+    std::unique_ptr<MeshTracer> mesh; // zones without a tree place cameras by the mesh
+    if (!zone.tree.exists())
+        mesh = std::make_unique<MeshTracer>(zone);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<float> ux(box.min.x, box.max.x), uy(box.min.y, box.max.y), uz(box.min.z, box.max.z),
         yaw(0.0f, 360.0f), pitch(-60.0f, 60.0f);
@@ -64,7 +84,7 @@ std::vector<Camera> random_cameras_in_regions(const Zone& zone, size_t count, ui
     for (size_t i = 0; i < count; ++i) {
         for (int attempt = 0; attempt < 10000; ++attempt) {
             const glm::vec3 p{ux(rng), uy(rng), uz(rng)};
-            if (good_viewpoint(zone, p, clearance)) {
+            if (mesh ? good_mesh_viewpoint(*mesh, p, clearance) : good_viewpoint(zone, p, clearance)) {
                 cameras.push_back(with_lens(lens, p, yaw(rng), pitch(rng)));
                 break;
             }

@@ -16,6 +16,9 @@ namespace pvs {
 // 1.5 times the distance of the near plane's corners, so the near plane never reaches through a
 // wall (a renderer would show what lies behind it, which no PVS is meant to include).
 //
+// Zones without a tree (OBJ levels) have no regions to stand in: there a camera goes where the
+// mesh says open space is (mesh_tracer.h), with no face nearer than the same clearance.
+//
 // `count` cameras at random points of the zone's bounds that qualify, yaw in [0, 360),
 // pitch in [-60, 60]; lens fields (fov, aspect, near, far) are copied from `lens`. Gives up on a
 // zone whose regions fill almost none of its bounds after 10 000 tries per camera (fewer cameras).

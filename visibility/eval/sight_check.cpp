@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <glm/geometric.hpp>
 
 namespace pvs {
@@ -26,11 +27,40 @@ SightCheck::SightCheck(const Zone& zone, SkyPortals sky) : tracer_(zone.tree, zo
             }
         }
     }
+    if (!zone.tree.exists() && !mesh.faces.empty()) {
+        mesh_ = std::make_unique<MeshTracer>(zone);
+        face_region_.assign(mesh.faces.size(), -1);
+        for (auto r = uint32_t(zone.region_count()); r-- > 0;) // the lowest region listing a face wins
+            for (uint32_t f : zone.faces_of_region(r))
+                if (f < face_region_.size())
+                    face_region_[f] = int32_t(r);
+    }
+}
+
+SightCheck::~SightCheck() = default;
+
+SightResult SightCheck::face_along_mesh_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face) const
+{
+    SightResult result;
+    const MeshTracer::Hit hit =
+        mesh_->first_hit(glm::vec3(eye), glm::vec3(direction), std::numeric_limits<float>::infinity());
+    if (!hit.hit)
+        return result;
+    result.hit_distance = double(hit.t);
+    if (hit.face != face || !hit.front) {
+        result.sight = Sight::Blocked;
+        return result;
+    }
+    result.sight = Sight::Open;
+    result.end_region = face < face_region_.size() ? face_region_[face] : -1;
+    return result;
 }
 
 SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face,
                                        TreeTracer::Scratch& scratch) const
 {
+    if (mesh_)
+        return face_along_mesh_ray(eye, direction, face);
     SightResult result;
     if (!tracer_.has_tree() || face >= planes_.size() || !planes_[face].valid)
         return result;

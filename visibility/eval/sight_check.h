@@ -18,7 +18,12 @@
 // is a real but hair-thin sight line, the kind portal vis drops by its epsilons (ON_EPSILON =
 // 0.1) and a raster shows as a lone pixel at a wall edge; it is counted apart, not confirmed.
 //
-// Unknown: the zone has no tree, the ray does not meet the face's plane in front of the eye
+// Zones without a tree (OBJ levels) are checked against the mesh instead (mesh_tracer.h, Embree
+// in robust mode): the pixel's ray is Open when the first face it meets is the pixel's face, seen
+// from the front, and Blocked when another face is in front of it (the raster showed a face
+// through a crack); end_region is then the region (object) listing the face. No Grazing there.
+//
+// Unknown: the zone has neither tree nor mesh, the ray does not meet the face's plane in front of the eye
 // (a face seen edge-on, or a pixel centre just off its face), or the face has no area. Callers
 // count Unknown with the cracks: it is never confirmed.
 //
@@ -28,11 +33,13 @@
 #pragma once
 
 #include "visibility/portal/media.h"
+#include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/tree_trace.h"
 #include "visibility/zone.h"
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <vector>
 
 namespace pvs {
@@ -53,6 +60,10 @@ class SightCheck {
 public:
     explicit SightCheck(const Zone& zone, SkyPortals sky = SkyPortals::SkyToSky);
 
+    SightCheck(const SightCheck&) = delete;
+    SightCheck& operator=(const SightCheck&) = delete;
+    ~SightCheck();
+
     bool has_tree() const { return tracer_.has_tree(); }
     // `direction` must be unit length.
     SightResult face_along_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face,
@@ -64,8 +75,12 @@ private:
         double dist = 0.0;
         bool valid = false;
     };
+    SightResult face_along_mesh_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face) const;
+
     TreeTracer tracer_;
     std::vector<FacePlane> planes_;
+    std::unique_ptr<MeshTracer> mesh_;    // zones without a tree
+    std::vector<int32_t> face_region_;    // mesh_: the first region listing each face, or -1
 };
 
 } // namespace pvs
