@@ -1,0 +1,114 @@
+// One point's six 90-degree views of the HateEngine E1M1 level (15 006 triangles), the unit of
+// work of the raster baker (visibility/raster/): pvscope's CPU rasteriser (CubeRaster::render)
+// against the baseline measured in the same run, Embree primary rays through the same pixel
+// centres (MeshTracer::first_hit, one ray at a time), at 32, 64 and 128 pixels a side. Points:
+// the centres of E1M1.hepvs's cells that are in open space, every seventh cell (50 of them).
+// The time is for all the points (divide by the counter `points` for one point); counter
+// faces_seen: faces with a pixel, summed over the points (within a few percent of each other:
+// the same rays, the rasteriser deciding pixel centres by edge functions).
+//
+//   build/tests/bench/bench_raster --benchmark_counters_tabular=true
+#include "tests/support/test_data.h"
+#include "visibility/raster/cube_raster.h"
+#include "visibility/raster/raster_vis.h"
+#include "visibility/reference/mesh_tracer.h"
+#include "wld/zone_file.h"
+
+#include <benchmark/benchmark.h>
+
+#include <limits>
+
+namespace pvs {
+namespace {
+
+struct Level {
+    Zone zone;
+    std::unique_ptr<MeshTracer> tracer;
+    std::vector<glm::vec3> points;
+};
+
+const Level* level()
+{
+    static const std::unique_ptr<Level> loaded = []() -> std::unique_ptr<Level> {
+        const auto path = test::find_shared_data("hateengine/E1M1.obj");
+        if (!path)
+            return nullptr;
+        auto l = std::make_unique<Level>();
+        l->zone = load_zone(*path);
+        l->tracer = std::make_unique<MeshTracer>(l->zone);
+        const ViewGrid& grid = *l->zone.view_grid;
+        for (uint32_t c = 0; c < grid.cell_count() && l->points.size() < 50; c += 7) {
+            const glm::vec3 g = grid_cell_points(grid, c, 0.0f)[0] * grid.grid_size;
+            const glm::vec3 p(g.x, -g.z, g.y);
+            if (l->tracer->in_open_space(p))
+                l->points.push_back(p);
+        }
+        return l;
+    }();
+    return loaded.get();
+}
+
+void BM_CubeRaster(benchmark::State& state)
+{
+    const Level* l = level();
+    if (!l) {
+        state.SkipWithError("needs ../shared/data/hateengine/E1M1.obj");
+        return;
+    }
+    CubeRaster raster(l->zone, {uint32_t(state.range(0)), true, 0.05f});
+    std::vector<uint8_t> seen(l->zone.mesh.faces.size());
+    uint64_t faces = 0;
+    for (auto _ : state) {
+        faces = 0;
+        for (const glm::vec3& p : l->points) {
+            std::fill(seen.begin(), seen.end(), 0);
+            raster.render(p, seen);
+            for (uint8_t s : seen)
+                faces += s;
+        }
+    }
+    state.counters["points"] = double(l->points.size());
+    state.counters["faces_seen"] = double(faces);
+}
+
+void BM_EmbreePrimaryRays(benchmark::State& state)
+{
+    const Level* l = level();
+    if (!l) {
+        state.SkipWithError("needs ../shared/data/hateengine/E1M1.obj");
+        return;
+    }
+    const auto r = uint32_t(state.range(0));
+    std::vector<uint8_t> seen(l->zone.mesh.faces.size());
+    uint64_t faces = 0;
+    for (auto _ : state) {
+        faces = 0;
+        for (const glm::vec3& p : l->points) {
+            std::fill(seen.begin(), seen.end(), 0);
+            for (int view = 0; view < 6; ++view)
+                for (uint32_t y = 0; y < r; ++y)
+                    for (uint32_t x = 0; x < r; ++x) {
+                        const int axis = view / 2;
+                        glm::vec3 d(0.0f);
+                        d[axis] = view % 2 ? -1.0f : 1.0f;
+                        d[(axis + 1) % 3] = 2.0f * (float(x) + 0.5f) / float(r) - 1.0f;
+                        d[(axis + 2) % 3] = 2.0f * (float(y) + 0.5f) / float(r) - 1.0f;
+                        const MeshTracer::Hit h = l->tracer->first_hit(p, d, std::numeric_limits<float>::infinity());
+                        if (h.hit && h.front)
+                            seen[h.face] = 1;
+                    }
+            for (uint8_t s : seen)
+                faces += s;
+        }
+    }
+    state.counters["points"] = double(l->points.size());
+    state.counters["faces_seen"] = double(faces);
+}
+
+BENCHMARK(BM_CubeRaster)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EmbreePrimaryRays)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+} // namespace
+} // namespace pvs
+
+BENCHMARK_MAIN();
