@@ -95,6 +95,8 @@ std::string check_options(const BakeOptions& o)
         return "--method must be portal-fast, portal-full, clustered, reference or raster, not '" + o.method + "'";
     if (o.method == "raster" && (o.resolution < 1 || o.resolution > 4096))
         return "--resolution must be 1..4096, not " + std::to_string(o.resolution);
+    if (o.lattice != "open" && o.lattice != "centred" && o.lattice != "hateengine")
+        return "--lattice must be open, centred or hateengine, not '" + o.lattice + "'";
     if (!(o.step >= 0.0f) || !(o.cell >= 0.0f) || !(o.grid_size > 0.0f))
         return "--step and --cell must be 0 or more and --grid-size more than 0";
     if (uses_registry(o) && !o.prt_in.empty())
@@ -371,6 +373,9 @@ MethodSettings method_settings(const BakeOptions& o)
     settings.raster_resolution = o.resolution;
     settings.raster_points = o.points;
     settings.raster_step = o.step;
+    settings.raster_lattice = o.lattice == "hateengine" ? Lattice::HateEngine
+                              : o.lattice == "centred"  ? Lattice::Centred
+                                                        : Lattice::OpenRandom;
     settings.cull_back_faces = o.cull_back_faces;
     return settings;
 }
@@ -560,9 +565,16 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_option("--seed", o->seed, "reference, raster: the sampling seed (the same seed gives the same PVS)")
         ->capture_default_str();
     cmd->add_option("--resolution", o->resolution, "raster: pixels per cube face side")->capture_default_str();
-    cmd->add_option("--points", o->points, "raster over regions: sample points in each region")->capture_default_str();
-    cmd->add_option("--step", o->step, "raster over a grid: lattice step in grid units (HateEngine's -s; 1 with "
-                                       "--cell 8 is its 1 + 8^3 points a cell); 0: each cell's centre only")
+    cmd->add_option("--points", o->points, "raster: sample points in each region, or in the open space of each grid "
+                                           "cell (--lattice open)")
+        ->capture_default_str();
+    cmd->add_option("--lattice", o->lattice, "raster over a grid: open (random points in the cell's open space), "
+                                             "centred (a lattice of --step) or hateengine (the baker's lattice, "
+                                             "points on the cell's far faces included)")
+        ->check(CLI::IsMember({"open", "centred", "hateengine"}))
+        ->capture_default_str();
+    cmd->add_option("--step", o->step, "raster, centred or hateengine lattice: step in grid units (HateEngine's -s; "
+                                       "1 with --cell 8 is its 1 + 8^3 points a cell); 0: each cell's centre only")
         ->capture_default_str();
     cmd->add_option("--back-faces", o->cull_back_faces, "raster: cull faces seen from behind (true, as the "
                                                          "HateEngine baker) or draw them")

@@ -59,10 +59,9 @@ private:
 constexpr int kLowestComparedLevel = 1;
 
 // The raster baker's points on the chart, from coarse to dense, a curve rather than one point:
-// (pixels per cube face side, points per region) over regions, (pixels, lattice step in grid
-// units) over a view grid (step 0: each cell's centre only; 4 with HateEngine's 8-unit cells: 9).
+// (pixels per cube face side, points per region, or per grid cell in open space).
 constexpr std::pair<uint32_t, uint32_t> kRasterRegionCurve[] = {{32, 4}, {64, 8}, {64, 32}};
-constexpr std::pair<uint32_t, float> kRasterGridCurve[] = {{32, 0.0f}, {64, 0.0f}, {64, 4.0f}};
+constexpr std::pair<uint32_t, uint32_t> kRasterGridCurve[] = {{32, 8}, {64, 8}, {64, 32}};
 
 std::vector<std::string> all_methods()
 {
@@ -184,10 +183,10 @@ std::vector<CompareEntry> compare_entries(const std::string& name, const Compare
     if (name == "raster") { // its knobs as a curve
         std::vector<CompareEntry> entries;
         if (grid_zone)
-            for (const auto& [resolution, step] : kRasterGridCurve) {
+            for (const auto& [resolution, points] : kRasterGridCurve) {
                 CompareEntry e{name, base};
                 e.settings.raster_resolution = resolution;
-                e.settings.raster_step = step;
+                e.settings.raster_points = points;
                 entries.push_back(e);
             }
         else

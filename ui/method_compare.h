@@ -76,7 +76,7 @@ struct CompareResult {
 
 // The entries a method name stands for (portal-full: levels 1-4 and its switches); empty for an
 // unknown name.
-// grid_zone: the zone has a view grid (raster's knobs are then pixels and the lattice step).
+// grid_zone: the zone has a view grid (raster's points are then per cell, in open space).
 std::vector<CompareEntry> compare_entries(const std::string& method, const CompareOptions& options,
                                           bool grid_zone = false);
 

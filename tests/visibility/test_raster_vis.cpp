@@ -1,7 +1,8 @@
 // The raster baker (visibility/raster/): cube maps rendered on the CPU from points in each cell.
 //  - known visibility on a hand-made OBJ of two closed rooms with a wall between: a cell inside a
-//    room sees that room's object only; a cell in the rock between them sees both (through the
-//    walls' culled backs, or the backs themselves when drawn); and the
+//    room sees that room's object only; a cell in the rock between them has no point in open
+//    space and an empty row, or, rendering every point as the HateEngine baker does, sees both
+//    (through the walls' culled backs, or the backs themselves when drawn); and the
 //    failure of the HateEngine lattice, built on it: its points on a cell's far faces sit on the
 //    wall at x = 100 and see the other room through it;
 //  - a lower bound: on a generated zone every raster row lies inside portal-full's (an upper
@@ -50,8 +51,13 @@ TEST(RasterVis, TwoRoomsAndAWall)
     ASSERT_EQ(grid.counts.x, 21u);
     RasterParams params;
     params.raster.resolution = 16;
-    params.step = 5.0f; // the centre and 8 lattice points a cell
     params.threads = 2;
+    params.points_per_region = 8;
+    const Pvs open_random = bake_raster_grid(zone, grid, params); // the default: points in open space
+    params.lattice = Lattice::Centred;
+    params.step = 5.0f; // the centre and 8 lattice points a cell
+    const Pvs open_only = bake_raster_grid(zone, grid, params);
+    params.open_space_only = false; // as the HateEngine baker: every point renders
     const Pvs with_culling = bake_raster_grid(zone, grid, params);
     params.lattice = Lattice::HateEngine;
     const Pvs hateengine = bake_raster_grid(zone, grid, params);
@@ -63,11 +69,15 @@ TEST(RasterVis, TwoRoomsAndAWall)
         const float x = grid.cell_bounds(cell).center().x;
         SCOPED_TRACE("cell " + std::to_string(cell) + " at x " + std::to_string(x));
         if (x < 100.0f) {
+            EXPECT_EQ(row_of(open_random, cell), a);
+            EXPECT_EQ(row_of(open_only, cell), a);
             EXPECT_EQ(row_of(with_culling, cell), a);
             EXPECT_EQ(row_of(both_sides, cell), a); // the room's own walls hide the other room
             // The last cells before the wall have lattice points on it: they see room B.
             EXPECT_EQ(row_of(hateengine, cell), x > 90.0f ? ab : a);
         } else if (x > 110.0f) {
+            EXPECT_EQ(row_of(open_random, cell), b);
+            EXPECT_EQ(row_of(open_only, cell), b);
             EXPECT_EQ(row_of(with_culling, cell), b);
         } else {
             // In the rock between the rooms: the rooms' walls turn their backs to it, so with
@@ -75,6 +85,8 @@ TEST(RasterVis, TwoRoomsAndAWall)
             // the backs themselves are what it sees. Both rooms either way.
             EXPECT_EQ(row_of(with_culling, cell), ab);
             EXPECT_EQ(row_of(both_sides, cell), ab);
+            EXPECT_TRUE(row_of(open_only, cell).empty()); // no point in open space: no camera
+            EXPECT_TRUE(row_of(open_random, cell).empty());
         }
     }
 }
@@ -113,7 +125,8 @@ TEST(RasterVis, DenserSamplingOnlyAddsAndThreadsDoNotMatter)
     const Zone rooms = two_rooms();
     RasterParams lattice;
     lattice.raster.resolution = 16;
-    lattice.step = 10.0f; // centre + far corner
+    lattice.lattice = Lattice::HateEngine; // offsets k * step: halving the step keeps every point
+    lattice.step = 10.0f;                  // centre + far corner
     const Pvs coarse = bake_raster_grid(rooms, *rooms.view_grid, lattice);
     lattice.step = 5.0f; // holds those points and more
     const Pvs fine = bake_raster_grid(rooms, *rooms.view_grid, lattice);

@@ -193,8 +193,12 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
 
 std::string raster_label(const MethodSettings& s)
 {
-    // Both sample knobs: points per region (region cells) and the lattice step (grid cells).
-    return format("res=%u points=%u step=%g", s.raster_resolution, s.raster_points, double(s.raster_step));
+    // The sample knobs: points per region or open cell, and the lattice step (grid lattices).
+    const char* lattice = s.raster_lattice == Lattice::OpenRandom ? "open"
+                          : s.raster_lattice == Lattice::Centred  ? "centred"
+                                                                  : "hateengine";
+    return format("res=%u points=%u step=%g lattice=%s", s.raster_resolution, s.raster_points,
+                  double(s.raster_step), lattice);
 }
 
 MethodRun run_raster(const Zone& zone, const MethodSettings& s)
@@ -203,6 +207,7 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     params.raster.resolution = s.raster_resolution;
     params.raster.cull_back_faces = s.cull_back_faces;
     params.step = s.raster_step;
+    params.lattice = s.raster_lattice;
     params.points_per_region = s.raster_points;
     params.seed = s.seed;
     params.threads = s.threads;

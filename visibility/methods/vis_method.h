@@ -23,6 +23,7 @@
 
 #include "visibility/portal/media.h"
 #include "visibility/pvs.h"
+#include "visibility/raster/raster_vis.h"
 #include "visibility/reference/reference_vis.h"
 #include "visibility/zone.h"
 
@@ -58,6 +59,7 @@ struct MethodSettings {
     uint32_t raster_resolution = 64;
     uint32_t raster_points = 16;
     float raster_step = 0.0f;
+    Lattice raster_lattice = Lattice::OpenRandom; // grid cells (raster_vis.h)
     bool cull_back_faces = true;
     std::function<bool(double fraction)> progress;
     std::function<void(const ReferenceRound& round, const Pvs& rows)> on_reference_round;

@@ -3,6 +3,7 @@
 #include "visibility/bit_row.h"
 #include "visibility/eval/image_accuracy.h"
 #include "visibility/parallel_items.h"
+#include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/region_sampler.h"
 #include "visibility/reference/sample_sequence.h"
 #include "visibility/region_lookup.h"
@@ -10,6 +11,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 namespace pvs {
@@ -119,12 +121,32 @@ Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams&
 {
     if (grid.cell_count() > 0xffffffffull)
         throw std::invalid_argument("raster: too many grid cells");
+    std::unique_ptr<MeshTracer> mesh; // where open space is, in a zone without a tree
+    if (params.open_space_only && !zone.tree.exists())
+        mesh = std::make_unique<MeshTracer>(zone);
+    const auto open = [&](const glm::vec3& p) {
+        if (!params.open_space_only)
+            return true;
+        return mesh ? mesh->in_open_space(p, 2.0f * params.raster.near_distance) : locate_point(zone.tree, p).in_region();
+    };
     return bake_cells(
         zone, uint32_t(grid.cell_count()), params, report,
         [&](uint32_t cell) {
-            std::vector<glm::vec3> points = grid_cell_points(grid, cell, params.step, params.lattice);
-            for (glm::vec3& p : points)
-                p = grid_to_zone(grid, p);
+            std::vector<glm::vec3> points;
+            if (params.lattice == Lattice::OpenRandom) {
+                const Aabb box = grid.cell_bounds(cell);
+                for (uint32_t i = 0; i < 32 * params.points_per_region && points.size() < params.points_per_region; ++i) {
+                    const uint64_t key = sampling::sample_key(params.seed, 0x7a58, cell, i);
+                    const glm::vec3 u(float(sampling::hash_unit(key, 0)), float(sampling::hash_unit(key, 1)),
+                                      float(sampling::hash_unit(key, 2)));
+                    if (const glm::vec3 p = box.min + u * (box.max - box.min); open(p))
+                        points.push_back(p);
+                }
+                return points;
+            }
+            for (const glm::vec3& g : grid_cell_points(grid, cell, params.step, params.lattice))
+                if (const glm::vec3 p = grid_to_zone(grid, g); open(p))
+                    points.push_back(p);
             return points;
         },
         false);

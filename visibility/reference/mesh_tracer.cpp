@@ -96,14 +96,14 @@ MeshTracer::Hit MeshTracer::first_hit(const glm::vec3& origin, const glm::vec3& 
     return hit;
 }
 
-bool MeshTracer::in_open_space(const glm::vec3& point) const
+bool MeshTracer::in_open_space(const glm::vec3& point, float clearance) const
 {
     for (int axis = 0; axis < 3; ++axis)
         for (float sign : {-1.0f, 1.0f}) {
             glm::vec3 d(0.0f);
             d[axis] = sign;
             const Hit h = first_hit(point, d, std::numeric_limits<float>::infinity());
-            if (!h.hit || !h.front)
+            if (!h.hit || !h.front || !(h.t > clearance))
                 return false;
         }
     return true;

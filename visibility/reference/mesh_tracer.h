@@ -33,7 +33,9 @@ public:
     MeshTracer& operator=(const MeshTracer&) = delete;
 
     Hit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far) const;
-    bool in_open_space(const glm::vec3& point) const;
+    // clearance: also no face nearer than this along the six axes (an eye that close to a wall
+    // would see through it past the near plane).
+    bool in_open_space(const glm::vec3& point, float clearance = 0.0f) const;
     size_t triangle_count() const;
 
 private:
