@@ -63,11 +63,14 @@ constexpr int kLowestComparedLevel = 1;
 constexpr std::pair<uint32_t, uint32_t> kRasterRegionCurve[] = {{32, 4}, {64, 8}, {64, 32}};
 constexpr std::pair<uint32_t, uint32_t> kRasterGridCurve[] = {{32, 8}, {64, 8}, {64, 32}};
 
-std::vector<std::string> all_methods()
+// Every method but the reference (baked first anyway); on a zone without a tree, only those that
+// need none (portal vis and clustering build on the tree).
+std::vector<std::string> all_methods(const Zone& zone)
 {
     std::vector<std::string> names;
     for (const VisMethod& m : vis_methods())
-        if (m.name != "reference")
+        if (m.name != "reference" &&
+            (zone.tree.exists() || (m.name != "portal-fast" && m.name != "portal-full" && m.name != "clustered")))
             names.emplace_back(m.name);
     return names;
 }
@@ -217,7 +220,7 @@ std::vector<CompareEntry> compare_entries(const std::string& name, const Compare
 CompareResult run_compare(const Zone& zone, const CompareOptions& options)
 {
     std::vector<CompareEntry> entries;
-    for (const std::string& name : options.methods.empty() ? all_methods() : options.methods) {
+    for (const std::string& name : options.methods.empty() ? all_methods(zone) : options.methods) {
         if (name == "reference")
             continue; // always baked, first
         std::vector<CompareEntry> more = compare_entries(name, options, zone.view_grid.has_value());

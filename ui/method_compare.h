@@ -38,6 +38,7 @@ struct CompareEntry {
 
 struct CompareOptions {
     std::vector<std::string> methods;   // registry names other than reference; empty: all of them
+                                        // (on a zone without a tree: all that need none)
     uint64_t reference_samples = 0;     // the reference's lines per region (0: its default)
     uint64_t seed = 1;                  // the reference's and the cameras' seed
     size_t cameras = 200;               // 0: no walk (popping and overdraw are then not measured)
