@@ -65,7 +65,8 @@ void print_case_table(std::FILE* out, const gen::CaseTable& table)
 int run_cases(const StabilityCommandOptions& o, std::FILE* out, std::FILE* err)
 {
     gen::CaseTableOptions options;
-    options.methods = split_comma_list(o.methods);
+    if (!o.methods.empty())
+        options.methods = split_comma_list(o.methods);
     if (o.cases != "all")
         options.cases = split_comma_list(o.cases);
     options.reference_samples = o.samples;
@@ -142,7 +143,8 @@ void print_table(std::FILE* out, const StabilityResult& result)
 int run_checked(const StabilityCommandOptions& o, std::FILE* out, std::FILE* err)
 {
     StabilityOptions options;
-    options.methods = split_comma_list(o.methods);
+    if (!o.methods.empty())
+        options.methods = split_comma_list(o.methods);
     for (const std::string& name : options.methods)
         if (const VisMethod* m = find_vis_method(name); !m || !m->bakes) {
             std::fprintf(err, "pvscope: error: --methods: '%s' is not a method that bakes (%s)\n", name.c_str(),
@@ -201,9 +203,9 @@ void register_stability_command(CLI::App& app, int& exit_code)
         case_list += (case_list.empty() ? "" : ", ") + std::string(name);
     cmd->add_option("--cases", o->cases, "Instead of a file: 'all' or comma-separated crafted cases with a known "
                                          "truth (" + case_list + "); missing and excess bits per method and case");
-    cmd->add_option("--methods", o->methods, "Comma-separated methods that bake: portal-fast, portal-full, clustered, "
-                                             "reference")
-        ->capture_default_str();
+    cmd->add_option("--methods", o->methods, "Comma-separated methods that bake (" + vis_method_names() +
+                                             "; default: portal-fast, portal-full, clustered, reference, and raster "
+                                             "with --cases)");
     cmd->add_option("--samples", o->samples, "Reference: sight lines per region (the untransformed zone's reference "
                                              "and the reference method's bakes)")
         ->capture_default_str();

@@ -25,7 +25,9 @@ namespace pvs::app {
 struct StabilityCommandOptions {
     std::string input;
     std::string cases; // "all" or comma-separated case names; instead of input
-    std::string methods = "portal-fast,portal-full,clustered,reference";
+    // Empty: the mode's own list (a file: portal-fast, portal-full, clustered, reference; --cases:
+    // those and raster, which is quick on the small crafted zones).
+    std::string methods;
     uint64_t samples = 256; // the reference's lines per region
     std::string sky = "sky-to-sky";
     unsigned threads = 0;

@@ -107,8 +107,11 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     // Stage 1: where is the camera? Its region (the tree), or in a grid zone its view cell.
     StageClock clock(options.time_stages);
     int32_t row_index = -1; // the PVS row to use: the region, or the grid cell
-    if (zone_->view_grid && !options.forced_region) {
-        row_index = zone_->view_grid->cell_at(camera.position);
+    if (zone_->view_grid) { // a forced value is a cell here: the rows are cells
+        const uint64_t cells = zone_->view_grid->cell_count();
+        row_index = !options.forced_region ? zone_->view_grid->cell_at(camera.position)
+                    : *options.forced_region >= 0 && uint64_t(*options.forced_region) < cells ? *options.forced_region
+                                                                                              : -1;
         stats.cell = row_index;
         stats.camera = row_index >= 0 ? CameraPlace::InRegion : CameraPlace::Outside;
     } else {

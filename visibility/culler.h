@@ -65,7 +65,8 @@ struct CullOptions {
     // Cull from this region instead of locating the camera: for callers that decide the region
     // themselves, such as the stale region cache an engine keeps (eval/stale_region_cache.h),
     // whose popping pvscope measures. A value outside [0, regions) means "not in a region"
-    // (CameraPlace::Outside). Unset: the tree walk, as always.
+    // (CameraPlace::Outside). In a grid zone the value is a view cell (its rows are cells). Unset:
+    // the tree walk (the grid lookup), as always.
     std::optional<int32_t> forced_region = std::nullopt;
 };
 

@@ -2,7 +2,7 @@
 // §5) against the baker's own E1M1.hepvs and hand-made files:
 //  - the shared file's header is the spec's (version 1, min (-38, -38, -192), cell 8, 17 x 7 x 28
 //    cells, 1257 names; per-cell counts 18 .. 446), and write(read(file)) is the file, byte for byte;
-//  - bad files name the offset: truncated anywhere, bytes after the last cell (what a 20-byte
+//  - bad files name the offset: truncated anywhere, any byte flipped, bytes after the last cell (what a 20-byte
 //    header guess leaves), an index past the names, a zero count, version 0;
 //  - the lookup is the engine's: strictly above min, trunc, x outermost, off the grid = none;
 //  - attached to its OBJ, each cell's row holds exactly the file's objects for that cell, and the
@@ -90,6 +90,17 @@ TEST(Hepvs, BadFilesNameTheOffset)
         const uint64_t at = error_offset(std::vector<uint8_t>(good.begin(), good.begin() + std::ptrdiff_t(cut)));
         EXPECT_LE(at, cut) << "cut at " << cut;
     }
+    for (size_t at = 0; at < good.size(); ++at) // every byte flipped: read or refused, never more
+        for (uint8_t mask : {uint8_t(0x01), uint8_t(0x80), uint8_t(0xFF)}) {
+            std::vector<uint8_t> flipped = good;
+            flipped[at] ^= mask;
+            try {
+                const HepvsFile h = read_hepvs(flipped, "flipped.hepvs");
+                EXPECT_EQ(h.cell_offsets.size(), h.cell_count() + 1);
+            } catch (const FileError& e) {
+                EXPECT_LE(e.offset(), flipped.size());
+            }
+        }
     std::vector<uint8_t> longer = good;
     longer.insert(longer.end(), {0, 0, 0, 0, 0, 0, 0, 0});
     EXPECT_EQ(error_offset(longer), good.size()); // what reading a 28-byte file as 20 bytes would leave
@@ -173,6 +184,15 @@ TEST(Hepvs, AttachedToItsObjEachCellRowIsTheFilesCell)
     EXPECT_EQ(s.cell, int32_t(cell));
     EXPECT_EQ(s.region, -1);
     EXPECT_EQ(visible.size(), h.cell(cell).size());
+    // A forced value is a cell in a grid zone: camera elsewhere, the start's row.
+    CullOptions forced{CullMode::Pvs, false};
+    forced.forced_region = int32_t(cell);
+    camera.position = glm::vec3(0.0f, 0.0f, 100000.0f);
+    const CullStats f = culler.cull(camera, forced, visible);
+    EXPECT_EQ(f.cell, int32_t(cell));
+    EXPECT_EQ(visible.size(), h.cell(cell).size());
+    forced.forced_region = int32_t(h.cell_count());
+    EXPECT_FALSE(culler.cull(camera, forced, visible).pvs_used);
 }
 
 TEST(Hepvs, AHepvsWithoutItsObjOrOfAnotherObjIsRefused)

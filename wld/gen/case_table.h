@@ -18,7 +18,7 @@
 namespace pvs::gen {
 
 struct CaseTableOptions {
-    std::vector<std::string> methods{"portal-fast", "portal-full", "clustered", "reference"};
+    std::vector<std::string> methods{"portal-fast", "portal-full", "clustered", "reference", "raster"};
     std::vector<std::string> cases; // empty: every case
     uint64_t reference_samples = 1024;
     unsigned threads = 0;
