@@ -9,6 +9,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libirrlicht-dev libglfw3-dev libimgui-dev libsquish-dev libtinyobjloader-dev libembree-dev
   libgl-dev xvfb xauth libgl1-mesa-dri
+  freedoom glbsp zdbsp
 )
 
 missing=()
