@@ -3,6 +3,7 @@
 #include "app/arguments.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
+#include "app/zone_load_args.h"
 #include "ui/chart/chart_png.h"
 #include "ui/chart/compare_points.h"
 #include "ui/chart/svg_canvas.h"
@@ -116,7 +117,7 @@ int run_checked(const CompareCommandOptions& o, std::FILE* out, std::FILE* err)
     options.height = (*size)[1];
     options.sky = sky_mode_from_name(o.sky);
     options.threads = o.threads;
-    const Zone zone = load_zone(o.input);
+    const Zone zone = load_zone(o.input, o.load);
     StagedProgress progress(err, &SigintScope::interrupted());
     options.progress = std::ref(progress);
     const ui::CompareResult result = ui::run_compare(zone, options);
@@ -149,6 +150,7 @@ void register_compare_command(CLI::App& app, int& exit_code)
         "compare", "Every visibility method on one zone against the sampled reference: time, memory, missing and "
                    "excess bits, exact popping and overdraw; table, CSV, JSON and a speed-vs-accuracy chart");
     cmd->add_option("file", o->input, "Zone file")->required()->check(CLI::ExistingFile);
+    add_zone_load_options(cmd, o->load);
     cmd->add_option("--methods", o->methods, "Comma-separated methods (default: all): " + vis_method_names() +
                                                  "; portal-full runs at levels 1-4 and without passages / target "
                                                  "checks. The reference always runs.");

@@ -10,6 +10,8 @@
 // Exit codes: 0 done, 1 the file could not be read or a result written, 2 bad arguments, 130 cancelled.
 #pragma once
 
+#include "wld/zone_file.h"
+
 #include <CLI/App.hpp>
 
 #include <cstdint>
@@ -20,6 +22,7 @@ namespace pvs::app {
 
 struct CompareCommandOptions {
     std::string input;
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
     std::string methods;   // comma-separated registry names; empty = all
     uint64_t samples = 0;  // the reference's lines per region (0: its default)
     uint64_t seed = 1;

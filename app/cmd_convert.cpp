@@ -1,5 +1,6 @@
 #include "app/cmd_convert.h"
 
+#include "app/zone_load_args.h"
 #include "visibility/file_error.h"
 #include "wld/convert.h"
 #include "wld/zone_file.h"
@@ -14,6 +15,7 @@ namespace {
 
 struct ConvertOptions {
     std::string input;
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
     std::string output;
     std::string to;
 };
@@ -27,7 +29,7 @@ int run_convert(const ConvertOptions& o)
         return 2;
     }
     try {
-        const Zone zone = load_zone(o.input);
+        const Zone zone = load_zone(o.input, o.load);
         for (const std::string& note : write_zone(zone, o.output, *output))
             std::printf("note: %s\n", note.c_str());
         std::printf("%s -> %s (%zu regions, %zu faces)\n", o.input.c_str(), o.output.c_str(), zone.region_count(),
@@ -49,7 +51,8 @@ void register_convert_command(CLI::App& app, int& exit_code)
 {
     auto o = std::make_shared<ConvertOptions>();
     CLI::App* cmd = app.add_subcommand("convert", "Write a zone as an EverQuest .s3d or a Wavefront .obj");
-    cmd->add_option("input", o->input, "Zone file (.bsp, .s3d)")->required();
+    cmd->add_option("input", o->input, "Zone file (.bsp, .s3d, .wad)")->required();
+    add_zone_load_options(cmd, o->load);
     cmd->add_option("output", o->output, "Output file (.s3d or .obj)")->required();
     cmd->add_option("--to", o->to, "Output format when the extension does not say")->check(CLI::IsMember({"s3d", "obj"}));
     cmd->callback([o, &exit_code] { exit_code = run_convert(*o); });

@@ -1,5 +1,6 @@
 #include "app/cmd_info.h"
 
+#include "app/zone_load_args.h"
 #include "app/zone_report.h"
 #include "visibility/file_error.h"
 #include "visibility/zone_stats.h"
@@ -118,6 +119,7 @@ void register_info_command(CLI::App& app, int& exit_code)
     cmd->add_option("file", options->path, "Zone file (.bsp, .s3d, .obj, or a .hepvs with its OBJ)")->required();
     cmd->add_option("--obj", options->load.obj, "A .hepvs's OBJ level (default: the .obj of the same name beside it)");
     cmd->add_option("--hepvs", options->load.hepvs, "An OBJ's .hepvs PVS (default: the .hepvs of the same name, if any)");
+    add_zone_load_options(cmd, options->load);
     cmd->add_option("--grid-size", options->load.grid_size, "OBJ units per .hepvs grid unit (the baker's -g)")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();

@@ -2,6 +2,7 @@
 
 #include "app/arguments.h"
 #include "app/cli_validators.h"
+#include "app/zone_load_args.h"
 #include "ui/gui/inspector_app.h"
 
 #include <memory>
@@ -15,6 +16,7 @@ namespace {
 
 struct InspectOptions {
     std::string path;
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
     std::string screenshot;
     int frames = 5;
     std::string size = "1280x800";
@@ -73,6 +75,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
     auto o = std::make_shared<InspectOptions>();
     CLI::App* cmd = app.add_subcommand("inspect", "Open the inspector window (the default when no subcommand is given)");
     cmd->add_option("file", o->path, "Zone file; the built-in demo zone when absent");
+    add_zone_load_options(cmd, o->load);
     cmd->add_option("--screenshot", o->screenshot,
                     "Draw --frames frames, write the whole window to this PNG and exit (needs a display; "
                     "xvfb-run works)");
@@ -114,6 +117,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         const auto size = parse_size_argument(o->size); // the validator accepted it
         gui::InspectorOptions options;
         options.zone_path = o->path;
+        options.zone_load = o->load;
         options.screenshot = o->screenshot;
         options.frames = o->frames;
         options.width = (*size)[0];

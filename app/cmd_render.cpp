@@ -3,6 +3,7 @@
 #include "app/arguments.h"
 #include "app/cli_validators.h"
 #include "app/pvs_source.h"
+#include "app/zone_load_args.h"
 
 #include "ui/software_renderer.h"
 #include "visibility/culler.h"
@@ -25,6 +26,7 @@ namespace {
 
 struct RenderOptions {
     std::string path;
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
     std::string camera;
     std::string cull_camera; // empty: cull from --camera
     float fov = 70.0f;
@@ -49,7 +51,7 @@ int run_render(const RenderOptions& options)
         return 2;
     }
     try {
-        const Zone zone = load_zone(options.path);
+        const Zone zone = load_zone(options.path, options.load);
 
         // Both cameras share the lens (fov, aspect, near, far): only where they stand differs.
         auto make_camera = [&](const std::array<float, 5>& values) {
@@ -111,7 +113,8 @@ void register_render_command(CLI::App& app, int& exit_code)
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = app.add_subcommand(
         "render", "Draw the regions the culler keeps, headless (Irrlicht's software renderer), into a PNG");
-    cmd->add_option("file", options->path, "Zone file (.bsp, .s3d)")->required();
+    cmd->add_option("file", options->path, "Zone file (.bsp, .s3d, .wad, .obj)")->required();
+    add_zone_load_options(cmd, options->load);
     cmd->add_option("--camera", options->camera, "Camera position and direction, zone units and degrees (z up; "
                                                   "yaw 0 = +x, 90 = +y; pitch up from the horizontal)")
         ->required()

@@ -3,6 +3,7 @@
 #include "app/arguments.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
+#include "app/zone_load_args.h"
 #include "visibility/eval/stability.h"
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
@@ -154,7 +155,7 @@ int run_checked(const StabilityCommandOptions& o, std::FILE* out, std::FILE* err
     options.reference_samples = o.samples;
     options.sky = sky_mode_from_name(o.sky);
     options.threads = o.threads;
-    const Zone zone = load_zone(o.input);
+    const Zone zone = load_zone(o.input, o.load);
     StagedProgress progress(err, &SigintScope::interrupted());
     options.progress = std::ref(progress);
     const StabilityResult result = run_stability(zone, options);
@@ -198,6 +199,7 @@ void register_stability_command(CLI::App& app, int& exit_code)
                      "against the reference of the untransformed zone; or, with --cases, each method on crafted zones whose "
                      "truth is known");
     cmd->add_option("file", o->input, "Zone file")->check(CLI::ExistingFile);
+    add_zone_load_options(cmd, o->load);
     std::string case_list;
     for (std::string_view name : gen::stability_case_names())
         case_list += (case_list.empty() ? "" : ", ") + std::string(name);

@@ -14,6 +14,8 @@
 // upper bound that misses a bit or a lower bound with an excess one; the exit code stays 0.
 #pragma once
 
+#include "wld/zone_file.h"
+
 #include <CLI/App.hpp>
 
 #include <cstdint>
@@ -24,6 +26,7 @@ namespace pvs::app {
 
 struct StabilityCommandOptions {
     std::string input;
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
     std::string cases; // "all" or comma-separated case names; instead of input
     // Empty: the mode's own list (a file: portal-fast, portal-full, clustered, reference; --cases:
     // those and raster, which is quick on the small crafted zones).

@@ -3,6 +3,7 @@
 #include "app/arguments.h"
 #include "app/cli_validators.h"
 #include "app/pvs_source.h"
+#include "app/zone_load_args.h"
 #include "ui/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/eval/sight_check.h"
@@ -24,6 +25,7 @@ namespace {
 
 struct WalkCommandOptions {
     std::string path;
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
     size_t cameras = 500;
     uint64_t seed = 1;
     std::string camera_path; // "regions", "portals" or a file of x,y,z,yaw,pitch lines
@@ -169,7 +171,7 @@ int run_walk(const WalkCommandOptions& o)
         return 2;
     }
     try {
-        const Zone zone = load_zone(o.path);
+        const Zone zone = load_zone(o.path, o.load);
         const PvsSource source = make_pvs_source(zone, o.pvs);
         std::fprintf(stderr, "pvscope: PVS %s\n", source.note.c_str());
         const Pvs* pvs = source.pvs;
@@ -238,6 +240,7 @@ void register_walk_command(CLI::App& app, int& exit_code)
     CLI::App* cmd = app.add_subcommand("walk", "Cull and render a reproducible set of cameras: speed, popping and "
                                                "overdraw per camera (CSV) and a summary");
     cmd->add_option("file", o->path, "Zone file")->required();
+    add_zone_load_options(cmd, o->load);
     cmd->add_option("--cameras", o->cameras, "Number of seeded random cameras inside regions")->capture_default_str();
     cmd->add_option("--seed", o->seed, "Seed of the random cameras")->capture_default_str();
     cmd->add_option("--path", o->camera_path,

@@ -79,7 +79,13 @@ struct BspTree {
     std::vector<int32_t> leaf_region; // region id, or kLeafSolid / kLeafOutside
     int32_t root = -1;                // encoded like a child: a node index, or ~leaf for a one-leaf tree
     TieRule tie_rule = TieRule::OnPlaneGoesBack;
+    // Trees extruded from a 2-D map (Doom): nodes[first_height_node..] are the regions' floors
+    // and ceilings (horizontal planes with a solid child), placed after every other node.
+    // Methods that ignore heights (2-D portal vis, as glVIS) walk past them:
+    // without_height_nodes (bsp_tree_edit.h). nodes.size() when there are none.
+    uint32_t first_height_node = UINT32_MAX;
 
+    bool has_height_nodes() const { return first_height_node < nodes.size(); }
     static constexpr bool is_leaf(int32_t child) { return child < 0; }
     // False for zones without a tree (OBJ levels: no node and no leaf).
     bool exists() const { return !leaf_region.empty(); }

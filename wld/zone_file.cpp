@@ -2,6 +2,7 @@
 
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
+#include "wld/doom/doom_zone.h"
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/hepvs/hepvs_zone.h"
 #include "wld/obj/obj_reader.h"
@@ -9,6 +10,7 @@
 #include "wld/quake/prt_file.h"
 
 #include <filesystem>
+#include <fstream>
 
 namespace pvs {
 
@@ -68,6 +70,14 @@ Zone load_obj_zone(const std::string& obj_path, std::string hepvs_path, const Zo
     return zone;
 }
 
+// "IWAD"/"PWAD" at the start: a Doom WAD or a .gwa (read by the Doom loader itself, with its sibling).
+bool starts_like_wad(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    return in.read(magic, 4) && (std::string(magic, 4) == "IWAD" || std::string(magic, 4) == "PWAD");
+}
+
 } // namespace
 
 Zone load_zone(const std::string& path) { return load_zone(path, ZoneLoadOptions{}); }
@@ -82,6 +92,8 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
     }
     if (is_obj_path(path))
         return load_obj_zone(path, options.hepvs, options);
+    if (starts_like_wad(path))
+        return doom::load_doom_zone(path, options.map, options.gwa);
     const std::vector<uint8_t> bytes = read_whole_file(path);
     if (quake::looks_like_bsp29(bytes)) {
         Zone zone = quake::load_bsp29(bytes, path);
@@ -96,8 +108,8 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
         throw FileError(path, 0, "Half-Life BSP 30 is not supported");
     if (eq::looks_like_pfs(bytes))
         return eq::load_eq_zone(bytes, path);
-    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29, EverQuest S3D, Wavefront .obj with "
-                             "HateEngine .hepvs)");
+    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29, EverQuest S3D, Doom WAD with GL "
+                             "nodes, Wavefront .obj with HateEngine .hepvs)");
 }
 
 } // namespace pvs

@@ -1,6 +1,8 @@
 // Opening a zone file of any supported format: the format is recognised from the bytes, not
 // from the file name, except for Wavefront OBJ (text with no magic: by its .obj extension) and
-// HateEngine .hepvs (by its extension: it is opened with its OBJ). Sidecar files are picked up
+// HateEngine .hepvs (by its extension: it is opened with its OBJ). A Doom WAD ("IWAD"/"PWAD") opens
+// ZoneLoadOptions::map with its GL nodes from the .gwa beside it or the WAD itself; a .gwa opens
+// with the .wad beside it. Sidecar files are picked up
 // when present: a Quake map's .prt portal file next to the .bsp, an OBJ's .hepvs of the same
 // name (or the one ZoneLoadOptions names), a .hepvs's OBJ likewise. Throws FileError for
 // unreadable, unknown or bad files.
@@ -16,6 +18,8 @@ struct ZoneLoadOptions {
     std::string obj;   // the OBJ of a .hepvs (default: the .obj of the same name beside it)
     std::string hepvs; // the .hepvs of an OBJ (default: the .hepvs of the same name, if any)
     float grid_size = 16.0f; // OBJ units per .hepvs grid unit (the baker's -g)
+    std::string map;         // the map of a Doom WAD (E1M1, MAP10; default: the first)
+    std::string gwa;         // GL nodes for a Doom WAD (default: the .gwa beside it, else the WAD's own)
 };
 
 Zone load_zone(const std::string& path);

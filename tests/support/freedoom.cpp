@@ -44,7 +44,7 @@ fs::path scratch_dir()
     return dir;
 }
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string shell_quoted(const std::string& s) { return "'" + s + "'"; }
 
 } // namespace
 
@@ -65,14 +65,14 @@ std::optional<std::string> gl_nodes_file(const std::string& wad, GlBuilder build
     case GlBuilder::glbsp_v5: {
         const char* version = builder == GlBuilder::glbsp_v2 ? "-v2" : builder == GlBuilder::glbsp_v3 ? "-v3" : "-v5";
         out = (scratch_dir() / (stem + "-" + std::to_string(tag) + ".gwa")).string();
-        command = std::string("glbsp -q -xp ") + version + " " + quoted(wad) + " -o " + quoted(out);
+        command = std::string("glbsp -q -xp ") + version + " " + shell_quoted(wad) + " -o " + shell_quoted(out);
         break;
     }
     case GlBuilder::zdbsp_v2:
     case GlBuilder::zdbsp_v5:
         out = (scratch_dir() / (stem + "-" + std::to_string(tag) + ".wad")).string();
-        command = std::string("zdbsp -t -g ") + (builder == GlBuilder::zdbsp_v5 ? "-5 " : "") + "-o " + quoted(out) +
-                  " " + quoted(wad);
+        command = std::string("zdbsp -t -g ") + (builder == GlBuilder::zdbsp_v5 ? "-5 " : "") + "-o " + shell_quoted(out) +
+                  " " + shell_quoted(wad);
         break;
     }
     command += " > /dev/null 2>&1";

@@ -270,7 +270,7 @@ int run_inspector(const InspectorOptions& options)
         }
     } else if (options.zone_path.empty())
         state.open_demo();
-    else if (!state.open_zone(options.zone_path)) {
+    else if (!state.open_zone(options.zone_path, options.zone_load)) {
         std::fprintf(stderr, "pvscope: error: %s\n", state.error().c_str());
         return 1;
     }

@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cstdint>
+#include "wld/zone_file.h"
+
 #include <optional>
 #include <string>
 
@@ -19,6 +21,7 @@ namespace pvs::gui {
 
 struct InspectorOptions {
     std::string zone_path; // empty: the built-in demo zone
+    ZoneLoadOptions zone_load; // --map / --gwa of a Doom WAD
     uint32_t width = 1280, height = 800;
     std::optional<std::array<float, 5>> camera; // x, y, z, yaw, pitch; else the zone's start view
     CullMode cull_mode = CullMode::PvsFrustum;

@@ -101,11 +101,11 @@ InspectorState::~InspectorState() = default;
 
 // ---- Zone --------------------------------------------------------------------------------------
 
-bool InspectorState::open_zone(const std::string& path)
+bool InspectorState::open_zone(const std::string& path, const ZoneLoadOptions& load)
 {
     try {
         const auto start = std::chrono::steady_clock::now();
-        auto zone = std::make_unique<Zone>(load_zone(path));
+        auto zone = std::make_unique<Zone>(load_zone(path, load));
         adopt_zone(std::move(zone), ms_since(start));
         return true;
     } catch (const std::exception& e) { // FileError for bad files; bad_alloc and the like too

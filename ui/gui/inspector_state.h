@@ -33,6 +33,7 @@
 #include "visibility/geometry/winding.h"
 #include "visibility/region_lookup.h"
 #include "visibility/zone.h"
+#include "wld/zone_file.h"
 #include "visibility/zone_stats.h"
 
 #include <cstdint>
@@ -87,7 +88,7 @@ public:
     // ---- Zone ----------------------------------------------------------------------------------
     // Loads a zone file (any supported format). On failure the current zone stays, error() says
     // why and false is returned; it never throws for a bad file.
-    bool open_zone(const std::string& path);
+    bool open_zone(const std::string& path, const ZoneLoadOptions& load = {});
     // The built-in procedural demo zone (gen::demo_zone_params()).
     void open_demo();
     bool has_zone() const { return zone_ != nullptr; }

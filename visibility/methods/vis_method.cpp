@@ -1,5 +1,6 @@
 #include "visibility/methods/vis_method.h"
 
+#include "visibility/bsp_tree_edit.h"
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
@@ -61,6 +62,11 @@ PortalSet zone_portals(const Zone& zone, const MethodSettings& s)
                                     " has none (an OBJ level: its cells are a grid)");
     PortalOptions options;
     options.sky = s.sky;
+    if (zone.tree.has_height_nodes() && !s.heights) {
+        // A 2-D method (glVIS): every region a column as high as the world, so sight passes
+        // over and under every step and door. The portals are those of the column tree.
+        return build_portals(without_height_nodes(zone.tree), zone.regions, zone_portal_world(zone), options);
+    }
     return build_zone_portals(zone, options);
 }
 

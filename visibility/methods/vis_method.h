@@ -51,6 +51,10 @@ struct MethodSettings {
     int level = 4;
     bool passages = true;
     bool target_checks = true;
+    // portal methods on zones extruded from 2-D maps (Doom, BspTree::first_height_node): false
+    // = ignore floors and ceilings, as glVIS (safe while doors and lifts move); true = the
+    // heights as built block sight (closed doors, floor/ceiling gaps): only for static maps.
+    bool heights = false;
     // reference: lines per region at most (0: the default, until converged), and the seed.
     uint64_t samples = 0;
     uint64_t seed = 1;
