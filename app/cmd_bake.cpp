@@ -13,6 +13,8 @@
 #include "visibility/portal/portalize.h"
 #include "wld/common/read_file.h"
 #include "wld/convert.h"
+#include "wld/doom/doom_zone.h"
+#include "wld/doom/gl_pvs_writer.h"
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/hepvs/hepvs_zone.h"
 #include "wld/quake/bsp29_reader.h"
@@ -40,21 +42,35 @@ namespace pvs::app {
 
 namespace {
 
-enum class InputFormat { QuakeBsp, EqS3d, ObjHepvs };
+enum class InputFormat { QuakeBsp, EqS3d, ObjHepvs, DoomWad };
 
 struct Input {
     InputFormat format;
     std::vector<uint8_t> bytes; // the original file (a BSP is written back from it)
     Zone zone;
+    // Doom: where the map and its GL group are, and each subsector's sector (for REJECT).
+    doom::MapSource doom_source;
+    std::vector<uint32_t> sector_of_subsector;
+    uint32_t sector_count = 0;
+
+    Input(InputFormat f, std::vector<uint8_t> b, Zone z) : format(f), bytes(std::move(b)), zone(std::move(z)) {}
 };
 
 const char* format_name(InputFormat f)
 {
-    return f == InputFormat::QuakeBsp ? "Quake BSP 29" : f == InputFormat::EqS3d ? "EverQuest S3D" : "OBJ + .hepvs";
+    return f == InputFormat::QuakeBsp ? "Quake BSP 29"
+           : f == InputFormat::EqS3d  ? "EverQuest S3D"
+           : f == InputFormat::DoomWad ? "Doom WAD + GL nodes"
+                                       : "OBJ + .hepvs";
 }
-const char* format_extension(InputFormat f)
+std::string lowercase_extension(const std::string& path);
+
+// The output's extension: the input's format, and for a Doom map the file holding its GL nodes.
+std::string format_extension(const Input& in)
 {
-    return f == InputFormat::QuakeBsp ? ".bsp" : f == InputFormat::EqS3d ? ".s3d" : ".hepvs";
+    if (in.format == InputFormat::DoomWad)
+        return lowercase_extension(in.doom_source.gl_path);
+    return in.format == InputFormat::QuakeBsp ? ".bsp" : in.format == InputFormat::EqS3d ? ".s3d" : ".hepvs";
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -84,13 +100,23 @@ bool uses_registry(const BakeOptions& o)
     return o.method == "clustered" || o.method == "reference" || o.method == "raster";
 }
 
+bool is_wad(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    return in.read(magic, 4) && (std::string(magic, 4) == "IWAD" || std::string(magic, 4) == "PWAD");
+}
+
 // The argument errors, each a sentence; empty when the options are usable.
 std::string check_options(const BakeOptions& o)
 {
     if (o.input.empty())
         return "no input file";
-    if (o.output.empty())
-        return "no output file: give -o OUT (.bsp for a Quake map, .s3d for an EverQuest zone)";
+    if (o.output.empty() && !o.in_place)
+        return "no output file: give -o OUT (.bsp for a Quake map, .s3d for an EverQuest zone, .gwa/.wad for a Doom "
+               "map), or --in-place for a Doom map";
+    if (o.in_place && !o.output.empty())
+        return "--in-place writes into the Doom map's own GL file: give it or -o, not both";
     if (const VisMethod* m = find_vis_method(o.method); !m || !m->bakes)
         return "--method must be portal-fast, portal-full, clustered, reference or raster, not '" + o.method + "'";
     if (o.method == "raster" && (o.resolution < 1 || o.resolution > 4096))
@@ -121,7 +147,7 @@ Input load_obj_input(const BakeOptions& o)
     ZoneLoadOptions load;
     load.hepvs = o.hepvs;
     load.grid_size = o.grid_size;
-    Input in{InputFormat::ObjHepvs, {}, load_zone(o.input, load)};
+    Input in(InputFormat::ObjHepvs, {}, load_zone(o.input, load));
     if (!in.zone.view_grid || o.cell > 0.0f) {
         const float cell = o.cell > 0.0f ? o.cell : kConvertHepvsCell;
         const std::optional<ViewGrid> grid = grid_over_points(in.zone.mesh.positions, cell, o.grid_size);
@@ -133,13 +159,35 @@ Input load_obj_input(const BakeOptions& o)
     return in;
 }
 
+// A Doom map: its zone (no textures: nothing is drawn) and where its GL group is.
+Input load_doom_input(const BakeOptions& o)
+{
+    const bool gwa_given = lowercase_extension(o.input) == ".gwa";
+    const std::string wad_path = gwa_given ? std::filesystem::path(o.input).replace_extension(".wad").string() : o.input;
+    const std::string gwa_path = gwa_given ? o.input : o.gwa.empty() ? doom::gwa_path_for(o.input) : o.gwa;
+    const doom::WadFile wad = doom::read_wad(wad_path);
+    std::optional<doom::WadFile> gwa;
+    std::error_code ec;
+    if (std::filesystem::exists(gwa_path, ec) && gwa_path != wad_path)
+        gwa = doom::read_wad(gwa_path);
+    const doom::DoomMap map = doom::read_doom_map(wad, gwa ? &*gwa : nullptr, o.map);
+    Input in(InputFormat::DoomWad, {}, doom::build_doom_zone(map, nullptr));
+    in.doom_source = map.source;
+    for (const doom::GlSubsector& ss : map.subsectors)
+        in.sector_of_subsector.push_back(ss.sector);
+    in.sector_count = uint32_t(map.sectors.size());
+    return in;
+}
+
 Input load_input(const BakeOptions& o)
 {
     const std::string& path = o.input;
     const std::string ext = lowercase_extension(path);
     if (ext == ".obj" || ext == ".hepvs")
         return load_obj_input(o);
-    Input in{InputFormat::QuakeBsp, read_whole_file(path), {}};
+    if (is_wad(path) || ext == ".gwa")
+        return load_doom_input(o);
+    Input in(InputFormat::QuakeBsp, read_whole_file(path), {});
     if (quake::looks_like_bsp29(in.bytes)) {
         in.zone = quake::load_bsp29(in.bytes, path);
     } else if (eq::looks_like_pfs(in.bytes)) {
@@ -147,7 +195,7 @@ Input load_input(const BakeOptions& o)
         in.zone = eq::load_eq_zone(in.bytes, path);
     } else {
         load_zone(path); // throws the loader's message for formats it recognises but cannot read
-        throw FileError(path, 0, "bake writes Quake BSP 29, EverQuest S3D and OBJ + .hepvs only");
+        throw FileError(path, 0, "bake writes Quake BSP 29, EverQuest S3D, Doom GL_PVS and OBJ + .hepvs only");
     }
     return in;
 }
@@ -209,8 +257,39 @@ struct BakeRun {
     ClusterReport cluster_report;
 };
 
+// A Doom map's PVS as GL_PVS: into -o (a copy of the GL file: the .gwa, or the WAD holding the
+// GL nodes, REJECT too with --reject), or with --in-place into the GL file itself with a backup.
+void write_doom_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
+{
+    const doom::MapSource& src = in.doom_source;
+    if (o.in_place) {
+        doom::GlPvsWriteOptions options;
+        options.rebuild_reject = o.reject;
+        const doom::GlPvsWriteResult r = doom::write_gl_pvs(src, pvs, in.sector_of_subsector, in.sector_count, options);
+        std::fprintf(err, "wrote GL_PVS into %s (%s; backup %s)%s\n", r.gl_file.c_str(),
+                     r.inserted ? "inserted" : "replaced", r.backup_file.c_str(),
+                     r.reject_written ? ", and REJECT rebuilt from it" : "");
+        return;
+    }
+    const doom::WadFile gl = doom::read_wad(src.gl_path);
+    std::vector<uint8_t> bytes = doom::with_gl_pvs(gl, src.gl_marker, doom::gl_pvs_lump(pvs));
+    if (o.reject) {
+        // The map lumps come before their GL group, so the map marker keeps its index.
+        const doom::WadFile updated = doom::parse_wad(std::move(bytes), o.output);
+        bytes = doom::with_reject(updated, src.map_marker,
+                                  doom::reject_from_pvs(pvs, in.sector_of_subsector, in.sector_count));
+    }
+    write_whole_file(o.output, bytes);
+    std::fprintf(err, "wrote %s: %s with GL_PVS (%u subsectors)%s\n", o.output.c_str(), src.gl_path.c_str(),
+                 pvs.region_count(), o.reject ? " and REJECT rebuilt from it" : "");
+}
+
 void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
 {
+    if (in.format == InputFormat::DoomWad) {
+        write_doom_output(o, in, pvs, err);
+        return;
+    }
     if (in.format == InputFormat::ObjHepvs) {
         Zone zone = in.zone;
         zone.baked_pvs = pvs;
@@ -377,6 +456,7 @@ MethodSettings method_settings(const BakeOptions& o)
                               : o.lattice == "centred"  ? Lattice::Centred
                                                         : Lattice::OpenRandom;
     settings.cull_back_faces = o.cull_back_faces;
+    settings.heights = o.heights;
     return settings;
 }
 
@@ -473,14 +553,25 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
                      o.input.c_str(), o.method.c_str());
         return kExitBadArguments;
     }
-    if (lowercase_extension(o.output) != format_extension(in.format)) {
+    if (in.format != InputFormat::DoomWad && (o.in_place || o.reject || o.heights || !o.map.empty())) {
+        std::fprintf(err, "pvscope: error: --in-place, --reject, --heights and --map are for Doom WADs\n");
+        return kExitBadArguments;
+    }
+    if (o.reject && !o.in_place && in.doom_source.gl_path != in.doom_source.wad_path) {
+        std::fprintf(err, "pvscope: error: --reject: REJECT lives in %s but the GL nodes (and -o) are in %s; use "
+                          "--in-place to write both\n",
+                     in.doom_source.wad_path.c_str(), in.doom_source.gl_path.c_str());
+        return kExitBadArguments;
+    }
+    if (!o.in_place && lowercase_extension(o.output) != format_extension(in)) {
         std::fprintf(err,
                      "pvscope: error: '%s' is in the %s format and bake writes its PVS in the same format, so the output "
                      "must end in %s, not '%s' (to change the format, run `pvscope convert` on the result)\n",
-                     o.input.c_str(), format_name(in.format), format_extension(in.format), o.output.c_str());
+                     o.input.c_str(), format_name(in.format), format_extension(in).c_str(), o.output.c_str());
         return kExitBadArguments;
     }
-    if (uses_registry(o))
+    // A Doom map goes through the registry, which picks the 2-D baker (or the 3-D one, --heights).
+    if (uses_registry(o) || in.format == InputFormat::DoomWad)
         return run_registry_method(o, in, load_seconds, err, cancel);
     BakeRun run;
     find_portals(o, in.zone, run, err);
@@ -529,8 +620,16 @@ void register_bake_command(CLI::App& app, int& exit_code)
                 "the zone's own format (.bsp: new visdata, other lumps unchanged; .s3d: new VISLISTs; an OBJ level: "
                 "a .hepvs). Ctrl-C cancels and writes nothing.");
     cmd->add_option("file", o->input, "Zone file (Quake .bsp, EverQuest .s3d, or an OBJ level / its .hepvs)")->required();
-    cmd->add_option("-o,--output", o->output, "Output file, in the input's format (.bsp, .s3d; .hepvs for an OBJ)")
-        ->required();
+    cmd->add_option("-o,--output", o->output, "Output file, in the input's format (.bsp, .s3d; .hepvs for an OBJ; "
+                                              "a Doom map: a copy of its GL file, .gwa or .wad)");
+    cmd->add_option("--map", o->map, "Doom WAD: the map to bake (E1M1, MAP10; default: the first)");
+    cmd->add_option("--gwa", o->gwa, "Doom WAD: its GL nodes (default: the .gwa beside it, else the WAD's own)");
+    cmd->add_flag("--heights", o->heights, "Doom: floors and ceilings as built block sight (3-D portals; closed "
+                                           "doors and lifts count as built: only for maps whose sectors never move). "
+                                           "Default: 2-D, as glVIS");
+    cmd->add_flag("--reject", o->reject, "Doom: also rebuild the map's REJECT from the PVS (as glVIS does)");
+    cmd->add_flag("--in-place", o->in_place, "Doom: write GL_PVS into the map's own GL file (.gwa or WAD), keeping "
+                                             "the old one as .~gw / .~wa, as glVIS does");
     cmd->add_option("--method", o->method, "portal-fast (base vis only, loose), portal-full (clipped flow), "
                                            "clustered (portal-full over clusters of regions), reference (sampled "
                                            "sight lines: a lower bound, for judging other PVSs) or raster (cube "

@@ -64,6 +64,14 @@ struct BakeOptions {
     float cell = 0.0f;
     float grid_size = 16.0f;
     std::string hepvs;
+    // Doom WADs: the map and its GL nodes (ZoneLoadOptions), floors and ceilings as built
+    // blocking sight (MethodSettings::heights), REJECT rebuilt from the PVS, and writing into
+    // the GL file itself (with glVIS's backup, .~gw / .~wa) instead of -o.
+    std::string map;
+    std::string gwa;
+    bool heights = false;
+    bool reject = false;
+    bool in_place = false;
 };
 
 // Runs the bake; messages and progress go to `err`. `cancel`, when given, is polled while the

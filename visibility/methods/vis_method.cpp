@@ -4,6 +4,7 @@
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
+#include "visibility/portal/portal_vis_2d.h"
 #include "visibility/portal/portalize.h"
 #include "visibility/portal/region_clusters.h"
 #include "visibility/raster/raster_vis.h"
@@ -101,6 +102,10 @@ MethodRun run_portal(const Zone& zone, const MethodSettings& s, VisParams::Metho
 {
     const auto start = std::chrono::steady_clock::now();
     VisReport report;
+    if (zone.tree.has_height_nodes() && !s.heights) { // an extruded 2-D map: glVIS's 2-D vis
+        Pvs pvs = bake_portal_vis_2d(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
+        return run_from_report(std::move(pvs), report, seconds_since(start), std::string(name) + " (2-D)");
+    }
     Pvs pvs = bake_portal_vis(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
     return run_from_report(std::move(pvs), report, seconds_since(start), name);
 }

@@ -27,10 +27,11 @@
 // nothing has colors, so flat() and wall() give nullopt. A texture whose patch name has no lump
 // leaves that patch out (the texture may end up transparent). Anything corrupt throws
 // FileError naming the WAD file, the absolute byte offset and, in the reason, the lump (and the
-// texture being composed): the constructor for a short PLAYPAL or a PNAMES / TEXTURE1 / TEXTURE2
-// directory past its lump; wall() for a texture record past its lump, a size outside
-// 1..kMaxDoomTextureSide, a negative patch count, a patch index outside PNAMES, a patch whose
-// header, column offsets or posts run past its lump, or a composition that takes more than
+// texture being composed): the constructor for a short PLAYPAL, a negative count, or a PNAMES /
+// TEXTURE1 / TEXTURE2 directory past its lump; wall() for a texture record past its lump, a size
+// outside 1..kMaxDoomTextureSide, a negative patch count, a patch index outside PNAMES, a patch
+// with a negative width or whose header, column offsets or posts run past its lump (only the
+// columns inside the texture are read), or a composition that takes more than
 // 32 * width * height + 2^22 steps (posts and texels: only garbage gets there, and it is
 // stopped instead of hanging). Nothing is read outside a lump.
 //

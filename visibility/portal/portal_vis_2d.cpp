@@ -1,0 +1,481 @@
+#include "visibility/portal/portal_vis_2d.h"
+
+#include "visibility/bit_row.h"
+#include "visibility/parallel_items.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <thread>
+#include <cstdio>
+#include <cstdlib>
+
+namespace pvs {
+
+namespace {
+
+constexpr double kOnEpsilon = 0.1; // glVIS's ON_EPSILON (§4.5), as Quake's vis
+
+struct Vec2 {
+    double x = 0, y = 0;
+};
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+
+struct Line {
+    Vec2 n; // unit normal
+    double d = 0;
+    double distance(Vec2 p) const { return dot(n, p) - d; }
+    Line flipped() const { return {{-n.x, -n.y}, -d}; }
+};
+
+struct Segment {
+    Vec2 p[2];
+};
+
+struct Portal2 {
+    Segment seg;
+    Line line;      // normal into `leaf`
+    uint32_t leaf;  // the region it leads into
+    uint32_t owner; // the region it is stored in
+};
+
+struct Graph {
+    std::vector<Portal2> portals;        // directed: 2i and 2i + 1
+    std::vector<uint32_t> first_of_leaf; // leaf r's outgoing portals: order[first[r] .. first[r + 1])
+    std::vector<uint32_t> order;
+    uint32_t leaf_count = 0;
+    size_t words = 0;
+    size_t skipped = 0;
+};
+
+// The portal's segment and line in the plane, or false when it is not a vertical portal.
+bool project(const PortalSet& set, const Portal& portal, Segment& seg, Line& line)
+{
+    if (portal.point_count < 3)
+        return false;
+    const glm::vec3* pts = set.points.data() + portal.first_point;
+    // Newell's normal: robust for any planar polygon (the orientation of the first three points).
+    glm::dvec3 normal(0.0);
+    for (uint32_t i = 0; i < portal.point_count; ++i) {
+        const glm::dvec3 a(pts[i]), b(pts[(i + 1) % portal.point_count]);
+        normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    // PRT1 points are clockwise seen from the front: Newell's normal of a clockwise polygon
+    // points to the back, so negate it to point into regions[0] (portal_vis.h).
+    normal = -normal;
+    const double length = std::sqrt(normal.x * normal.x + normal.y * normal.y + normal.z * normal.z);
+    if (!(length > 0) || std::abs(normal.z) / length > 0.01)
+        return false;
+    const double planar = std::hypot(normal.x, normal.y);
+    line.n = {normal.x / planar, normal.y / planar};
+    double best = -1;
+    for (uint32_t i = 0; i < portal.point_count; ++i)
+        for (uint32_t j = i + 1; j < portal.point_count; ++j) {
+            const double dx = double(pts[i].x) - pts[j].x, dy = double(pts[i].y) - pts[j].y;
+            if (dx * dx + dy * dy > best) {
+                best = dx * dx + dy * dy;
+                seg.p[0] = {pts[i].x, pts[i].y};
+                seg.p[1] = {pts[j].x, pts[j].y};
+            }
+        }
+    if (best < kOnEpsilon * kOnEpsilon)
+        return false;
+    line.d = dot(line.n, seg.p[0]);
+    return true;
+}
+
+Graph build_graph(const PortalSet& set, uint32_t region_count)
+{
+    Graph g;
+    g.leaf_count = region_count;
+    g.words = bits::words_for(region_count);
+    for (const Portal& portal : set.portals) {
+        Segment seg;
+        Line line;
+        const int32_t r0 = portal.regions[0], r1 = portal.regions[1];
+        if (r0 < 0 || r1 < 0 || uint32_t(r0) >= region_count || uint32_t(r1) >= region_count || r0 == r1 ||
+            !project(set, portal, seg, line)) {
+            ++g.skipped;
+            continue;
+        }
+        // 2i: stored in regions[0], leads into regions[1] (normal negated to point there).
+        g.portals.push_back({seg, line.flipped(), uint32_t(r1), uint32_t(r0)});
+        g.portals.push_back({seg, line, uint32_t(r0), uint32_t(r1)});
+    }
+    g.first_of_leaf.assign(region_count + 1, 0);
+    for (const Portal2& p : g.portals)
+        ++g.first_of_leaf[p.owner + 1];
+    std::partial_sum(g.first_of_leaf.begin(), g.first_of_leaf.end(), g.first_of_leaf.begin());
+    g.order.resize(g.portals.size());
+    std::vector<uint32_t> fill(g.first_of_leaf.begin(), g.first_of_leaf.end() - 1);
+    for (uint32_t i = 0; i < g.portals.size(); ++i)
+        g.order[fill[g.portals[i].owner]++] = i;
+    return g;
+}
+
+bool has_point_in_front(const Segment& s, const Line& l)
+{
+    return l.distance(s.p[0]) > kOnEpsilon || l.distance(s.p[1]) > kOnEpsilon;
+}
+bool has_point_behind(const Segment& s, const Line& l)
+{
+    return l.distance(s.p[0]) < -kOnEpsilon || l.distance(s.p[1]) < -kOnEpsilon;
+}
+
+// Base vis of directed portal pi: the leaves a flood through the portals in front of it reaches.
+void base_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& stack, uint64_t* flood)
+{
+    const Portal2& p = g.portals[pi];
+    const std::span<uint64_t> row(flood, g.words);
+    stack.assign(1, p.leaf);
+    bits::set(row, p.leaf);
+    while (!stack.empty()) {
+        const uint32_t leaf = stack.back();
+        stack.pop_back();
+        for (uint32_t k = g.first_of_leaf[leaf]; k < g.first_of_leaf[leaf + 1]; ++k) {
+            const Portal2& t = g.portals[g.order[k]];
+            if (bits::test(row, t.leaf) || !has_point_in_front(t.seg, p.line) || !has_point_behind(p.seg, t.line))
+                continue;
+            bits::set(row, t.leaf);
+            stack.push_back(t.leaf);
+        }
+    }
+}
+
+// Keeps the part of `s` in front of `l` (points within the epsilon count as on it and stay).
+// False when no point is in front; `s` unchanged when none is behind.
+bool clip_front(Segment& s, const Line& l)
+{
+    const double d0 = l.distance(s.p[0]), d1 = l.distance(s.p[1]);
+    const bool back0 = d0 < -kOnEpsilon, back1 = d1 < -kOnEpsilon;
+    if (!back0 && !back1)
+        return true;
+    if (!(d0 > kOnEpsilon) && !(d1 > kOnEpsilon))
+        return false;
+    const double t = d0 / (d0 - d1);
+    const Vec2 mid{s.p[0].x + t * (s.p[1].x - s.p[0].x), s.p[0].y + t * (s.p[1].y - s.p[0].y)};
+    s.p[back0 ? 0 : 1] = mid;
+    return true;
+}
+
+// Quake's ClipToSeparators in the plane: for each endpoint of `source`, the first endpoint of
+// `pass` giving a line with the other source endpoint strictly on one side and the other pass
+// endpoint strictly on the other; `target` is clipped to the pass side (the source side when
+// `flip`). False when the target is clipped away.
+bool clip_to_separators(const Segment& source, const Segment& pass, Segment& target, bool flip)
+{
+    for (int i = 0; i < 2; ++i) {
+        const Vec2 a = source.p[i], other_a = source.p[1 - i];
+        for (int j = 0; j < 2; ++j) {
+            const Vec2 b = pass.p[j];
+            const Vec2 v{b.x - a.x, b.y - a.y};
+            const double length2 = v.x * v.x + v.y * v.y;
+            if (length2 < kOnEpsilon * kOnEpsilon)
+                continue;
+            // The candidate's unnormalised normal: distances are compared against the epsilon
+            // times its length, so only the line that is used needs a square root.
+            Vec2 n{-v.y, v.x};
+            const double length = std::sqrt(length2);
+            const double limit = kOnEpsilon * length;
+            double ds = n.x * (other_a.x - b.x) + n.y * (other_a.y - b.y);
+            if (std::abs(ds) <= limit)
+                continue; // the source lies along it
+            if (ds > 0)
+                n = {-n.x, -n.y}; // the source behind
+            const double dp = n.x * (pass.p[1 - j].x - b.x) + n.y * (pass.p[1 - j].y - b.y);
+            if (!(dp > limit))
+                continue; // the pass not strictly in front: not a separator
+            if (flip)
+                n = {-n.x, -n.y};
+            Line sep{{n.x / length, n.y / length}, 0};
+            sep.d = dot(sep.n, b);
+            if (!clip_front(target, sep))
+                return false;
+            break;
+        }
+    }
+    return true;
+}
+
+struct Frame {
+    std::vector<uint64_t> mightsee; // only words [lo, hi) are meaningful (the rest: zero)
+    size_t lo = 0, hi = 0;
+    Segment source, pass;
+    Line line;
+    bool has_pass = false;
+};
+
+class Walker {
+public:
+    Walker(const Graph& g, int level, const std::vector<uint64_t>& flood, const std::vector<uint64_t>& vis,
+           const std::vector<uint32_t>& rank, const std::atomic<uint8_t>* done, const std::atomic<bool>& stop)
+        : g_(g), level_(level), flood_(flood), vis_(vis), rank_(rank), done_(done), stop_(stop), on_chain_(g.leaf_count, 0)
+    {
+    }
+
+    // Walks from directed portal pi into `out` (words). False when stopped.
+    bool run(uint32_t pi, uint64_t* out)
+    {
+        const Portal2& p = g_.portals[pi];
+        out_ = std::span<uint64_t>(out, g_.words);
+        std::fill(out_.begin(), out_.end(), 0);
+        head_ = &p;
+        my_rank_ = rank_[pi];
+        Frame& head = frame(0);
+        std::copy_n(flood_.data() + size_t(pi) * g_.words, g_.words, head.mightsee.data());
+        head.lo = 0;
+        head.hi = g_.words;
+        head.source = p.seg;
+        head.line = p.line;
+        head.has_pass = false;
+        stopped_ = false;
+        steps_ = 0;
+        walk(p.leaf, 0);
+        return !stopped_;
+    }
+
+    size_t leaf_recursions = 0;
+    double wait_seconds = 0;
+    size_t steps() const { return steps_; }
+
+private:
+    const Graph& g_;
+    int level_;
+    const std::vector<uint64_t>& flood_;
+    const std::vector<uint64_t>& vis_;
+    const std::vector<uint32_t>& rank_;
+    const std::atomic<uint8_t>* done_;
+    const std::atomic<bool>& stop_;
+    std::vector<uint8_t> on_chain_;
+    std::vector<Frame> frames_;
+    std::span<uint64_t> out_;
+    const Portal2* head_ = nullptr;
+    uint32_t my_rank_ = 0;
+    bool stopped_ = false;
+    size_t steps_ = 0;
+
+    Frame& frame(size_t depth)
+    {
+        while (frames_.size() <= depth) {
+            frames_.emplace_back();
+            frames_.back().mightsee.assign(g_.words, 0);
+        }
+        return frames_[depth];
+    }
+
+    // The row a walk ANDs in when it passes portal t: its final vis when t ranks well below
+    // this walk's portal (waiting for it when needed), else its mightsee.
+    const uint64_t* prune_row(uint32_t t)
+    {
+        if (rank_[t] + kPruneLag < my_rank_) {
+            if (!done_[t].load(std::memory_order_acquire)) {
+                const auto start = std::chrono::steady_clock::now();
+                while (!done_[t].load(std::memory_order_acquire)) {
+                    if (stop_.load(std::memory_order_relaxed))
+                        return flood_.data() + size_t(t) * g_.words;
+                    std::this_thread::yield();
+                }
+                wait_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            }
+            return vis_.data() + size_t(t) * g_.words;
+        }
+        return flood_.data() + size_t(t) * g_.words;
+    }
+
+    void walk(uint32_t leaf, size_t depth)
+    {
+        bits::set(out_, leaf);
+        if ((++steps_ & 1023) == 0 && stop_.load(std::memory_order_relaxed))
+            stopped_ = true;
+        if (stopped_)
+            return;
+        on_chain_[leaf] = 1;
+        for (uint32_t k = g_.first_of_leaf[leaf]; k < g_.first_of_leaf[leaf + 1] && !stopped_; ++k) {
+            const uint32_t ti = g_.order[k];
+            const Portal2& t = g_.portals[ti];
+            Frame& prev = frames_[depth];
+            const size_t leaf_word = t.leaf >> 6;
+            if (leaf_word < prev.lo || leaf_word >= prev.hi || !bits::test(prev.mightsee, t.leaf))
+                continue;
+            if (on_chain_[t.leaf]) {
+                ++leaf_recursions;
+                continue;
+            }
+            Frame& cur = frame(depth + 1);
+            Frame& before = frames_[depth]; // frame() may have grown the vector
+            const uint64_t* row = prune_row(ti);
+            // The walk's rows shrink fast: AND only the words still holding bits, and keep the
+            // span of the result's non-zero words.
+            uint64_t more = 0;
+            size_t lo = SIZE_MAX, hi = 0;
+            for (size_t w = before.lo; w < before.hi; ++w) {
+                const uint64_t m = before.mightsee[w] & row[w];
+                cur.mightsee[w] = m;
+                more |= m & ~out_[w];
+                if (m) {
+                    lo = std::min(lo, w);
+                    hi = w + 1;
+                }
+            }
+            cur.lo = lo == SIZE_MAX ? 0 : lo;
+            cur.hi = hi;
+            if (!more && bits::test(out_, t.leaf))
+                continue;
+            const Line back = t.line.flipped();
+            if (before.line.n.x == back.n.x && before.line.n.y == back.n.y)
+                continue; // cannot go out through a coplanar face
+            cur.pass = t.seg;
+            if (!clip_front(cur.pass, head_->line))
+                continue;
+            cur.source = before.source;
+            if (!clip_front(cur.source, back))
+                continue;
+            cur.line = t.line;
+            cur.has_pass = true;
+            if (before.has_pass && !clip_separators(before, cur))
+                continue;
+            walk(t.leaf, depth + 1);
+        }
+        on_chain_[leaf] = 0;
+    }
+
+    // In the plane, the separators of tests 1 and 3 are those of tests 0 and 2 (a line through
+    // a0 and b1 with a1 and b0 strictly on opposite sides is the same line whichever segment is
+    // called the source, and both keep the same side), so levels 1 and 3 add nothing.
+    bool clip_separators(const Frame& prev, Frame& cur) const
+    {
+        if (!clip_to_separators(cur.source, prev.pass, cur.pass, false))
+            return false;
+        if (level_ > 1 && !clip_to_separators(cur.pass, prev.pass, cur.source, false))
+            return false;
+        return true;
+    }
+};
+
+unsigned resolve_threads(unsigned requested, size_t items)
+{
+    unsigned n = requested ? requested : std::max(1u, std::thread::hardware_concurrency());
+    return unsigned(std::max<size_t>(1, std::min<size_t>(n, items)));
+}
+
+} // namespace
+
+Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisParams& params, VisReport* report)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const auto since = [](auto t0) { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    VisReport rep;
+    const Graph g = build_graph(input, region_count);
+    const uint32_t n = uint32_t(g.portals.size());
+    rep.portals = n / 2;
+    rep.portals_skipped = g.skipped;
+    rep.threads = resolve_threads(params.threads, n);
+    std::atomic<bool> stop{false};
+    std::atomic<size_t> finished{0};
+    const bool full = params.method == VisParams::Method::Full;
+    const double base_share = full ? 0.05 : 1.0;
+    const auto fraction = [&] { return double(finished.load()) / std::max<uint32_t>(n, 1); }; // of the phase
+
+    std::vector<uint64_t> flood(size_t(n) * g.words, 0);
+    const auto base_progress = params.progress ? std::function<bool(double)>([&](double f) { return params.progress(f * base_share); })
+                                               : std::function<bool(double)>();
+    bool ok = parallel_items(
+        n, rep.threads, base_progress, fraction, stop, [] { return std::vector<uint32_t>(); },
+        [&](size_t i, std::vector<uint32_t>& stack) {
+            base_vis(g, uint32_t(i), stack, flood.data() + i * g.words);
+            finished.fetch_add(1, std::memory_order_relaxed);
+        });
+    rep.base_seconds = since(start);
+    const bool base_finished = ok;
+
+    std::vector<uint64_t> vis = flood; // unfinished portals keep their mightsee
+    std::vector<uint8_t> finished_walk(n, 0);
+    if (ok && full) {
+        std::vector<uint32_t> by_rank(n);
+        std::iota(by_rank.begin(), by_rank.end(), 0u);
+        std::vector<size_t> counts(n);
+        for (uint32_t i = 0; i < n; ++i)
+            counts[i] = bits::count(std::span<const uint64_t>(flood.data() + size_t(i) * g.words, g.words));
+        std::stable_sort(by_rank.begin(), by_rank.end(), [&](uint32_t a, uint32_t b) { return counts[a] < counts[b]; });
+        std::vector<uint32_t> rank(n);
+        for (uint32_t r = 0; r < n; ++r)
+            rank[by_rank[r]] = r;
+        std::unique_ptr<std::atomic<uint8_t>[]> done(new std::atomic<uint8_t>[n]);
+        for (uint32_t i = 0; i < n; ++i)
+            done[i].store(0);
+        finished.store(0);
+        std::atomic<size_t> recursions{0};
+        std::mutex wait_mutex;
+        double waited = 0;
+        const auto flow_progress = params.progress ? std::function<bool(double)>([&](double f) {
+            return params.progress(base_share + f * (1.0 - base_share));
+        })
+                                                   : std::function<bool(double)>();
+        struct Scratch {
+            std::unique_ptr<Walker> walker;
+            std::vector<uint64_t> row;
+        };
+        ok = parallel_items(
+            n, rep.threads, flow_progress, fraction, stop,
+            [&] {
+                Scratch s;
+                s.walker = std::make_unique<Walker>(g, std::clamp(params.level, 0, 3), flood, vis, rank, done.get(), stop);
+                s.row.assign(g.words, 0);
+                return s;
+            },
+            [&](size_t item, Scratch& s) {
+                const uint32_t pi = by_rank[item];
+                const size_t before_recursions = s.walker->leaf_recursions;
+                const double before_wait = s.walker->wait_seconds;
+                auto t0 = std::chrono::steady_clock::now();
+                const bool walked = s.walker->run(pi, s.row.data());
+                double dt = since(t0);
+                if (std::getenv("PVS2D_TRACE") && dt > 0.02) fprintf(stderr, "portal %u rank %u flood %zu vis %zu steps %zu %.3f s\n", pi, rank[pi], counts[pi], bits::count(std::span<const uint64_t>(s.row)), s.walker->steps(), dt);
+                if (walked) {
+                    std::copy(s.row.begin(), s.row.end(), vis.begin() + ptrdiff_t(size_t(pi) * g.words));
+                    finished_walk[pi] = 1;
+                    done[pi].store(1, std::memory_order_release);
+                }
+                recursions.fetch_add(s.walker->leaf_recursions - before_recursions);
+                const std::lock_guard lock(wait_mutex);
+                waited += s.walker->wait_seconds - before_wait;
+                finished.fetch_add(1, std::memory_order_relaxed);
+            });
+        rep.leaf_recursions = recursions.load();
+        rep.wait_seconds = waited;
+    }
+    rep.cancelled = !ok;
+
+    // A region sees the union of its outgoing portals' vis, and itself.
+    size_t total = 0;
+    Pvs pvs = Pvs::build(region_count, [&](uint32_t r, std::span<uint64_t> row) {
+        if (!base_finished) { // no mightsee yet: everything, the only safe answer
+            bits::fill(row, region_count);
+            total += region_count;
+            return true;
+        }
+        std::fill(row.begin(), row.end(), 0);
+        for (uint32_t k = g.first_of_leaf[r]; k < g.first_of_leaf[r + 1]; ++k) {
+            const uint64_t* src = vis.data() + size_t(g.order[k]) * g.words;
+            if (bits::test(std::span<const uint64_t>(src, g.words), r))
+                ++rep.saw_into_own_region;
+            for (size_t w = 0; w < g.words; ++w)
+                row[w] |= src[w];
+        }
+        bits::set(row, r);
+        total += bits::count(row);
+        return true;
+    });
+    rep.mean_visible = region_count ? double(total) / region_count : 0.0;
+    rep.peak_bytes_estimate = (flood.size() + vis.size()) * sizeof(uint64_t) + g.portals.size() * sizeof(Portal2);
+    rep.seconds = since(start);
+    if (params.progress && !rep.cancelled)
+        params.progress(1.0);
+    if (report)
+        *report = rep;
+    return pvs;
+}
+
+} // namespace pvs

@@ -1,0 +1,48 @@
+// Portal vis in the plane, as glVIS does it for Doom's GL subsectors (../shared/formats/
+// quake-doom-hepvs.md §4.5: "a 2D port of Quake vis"), for zones whose portals are all vertical
+// (the column tree of an extruded 2-D map: without_height_nodes, bsp_tree_edit.h).
+//
+// Input. The same PortalSet and orientation as bake_portal_vis (portal_vis.h): the plane of a
+// portal's points, normal into regions[0]. Each portal is projected to the plane z = 0: its
+// segment is the two points farthest apart in x, y; its line's normal is the plane normal's
+// x, y, normalised. Portals that are not vertical (|normal.z| > 0.01), or whose segment or
+// normal is shorter than ON_EPSILON, are skipped and counted (VisReport::portals_skipped).
+// Each portal gives two directed portals, 2i in regions[0] leading into regions[1], 2i+1 the
+// other way, the line's normal pointing into the region led to.
+//
+// Method::Fast (glVIS -fast): base vis. Portal p might see t when t has an endpoint in front of
+// p's line (beyond ON_EPSILON) and p has one behind t's line; mightsee is the flood from p's
+// destination through such t.
+// Method::Full: glVIS's flow in 2-D, with Quake's epsilons (ON_EPSILON 0.1) and rules. The walk
+// from directed portal p carries the source segment and the pass segment; a target t leaving
+// the current leaf is clipped to the front of p's line, the source to the back of t's line
+// (the back of the target), then the target by the separators source -> pass (level >= 0, and
+// mirrored pass -> source at level >= 1), the source by pass -> target (level >= 2, mirrored
+// at level >= 3). In 2-D a separator is a line through an endpoint of one segment and an
+// endpoint of the other with the two other endpoints strictly on opposite sides: a sight line
+// from the first segment through the second stays on the second's side of it. Clips keep
+// points within ON_EPSILON ("on"), return a segment with no point behind unchanged, and drop
+// one with no point in front. A walk never re-enters a leaf on its own chain, and stops where
+// its mightsee (the AND of the mightsee or final vis of every portal passed) adds nothing not
+// yet visible to a leaf already visible, as vis does. Unlike glVIS there is no depth cap (its
+// cap of 256 can cut a sight line).
+//
+// Determinism, threads, progress, cancellation: as bake_portal_vis. The directed portals are
+// ranked by increasing mightsee count (ties by index) and handed to the threads in rank order;
+// a walk prunes with the final vis of portals ranked more than kPruneLag below its own
+// (waiting for one still being walked) and with the mightsee of the others, so the result is
+// a fixed function of the input and the level, whatever the thread count. Cancelling returns
+// the finished portals' vis and the unfinished ones' mightsee (conservative).
+//
+// Memory: two rows of region_count bits per directed portal and, per thread, one row per walk
+// depth reached.
+#pragma once
+
+#include "visibility/portal/portal_vis.h"
+
+namespace pvs {
+
+Pvs bake_portal_vis_2d(const PortalSet& portals, uint32_t region_count, const VisParams& params,
+                       VisReport* report = nullptr);
+
+} // namespace pvs
