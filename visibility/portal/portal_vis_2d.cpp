@@ -9,8 +9,6 @@
 #include <cmath>
 #include <numeric>
 #include <thread>
-#include <cstdio>
-#include <cstdlib>
 
 namespace pvs {
 
@@ -146,7 +144,7 @@ void base_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& stack, uint64_
 
 // Keeps the part of `s` in front of `l` (points within the epsilon count as on it and stay).
 // False when no point is in front; `s` unchanged when none is behind.
-bool clip_front(Segment& s, const Line& l)
+[[gnu::always_inline]] inline bool clip_front(Segment& s, const Line& l)
 {
     const double d0 = l.distance(s.p[0]), d1 = l.distance(s.p[1]);
     const bool back0 = d0 < -kOnEpsilon, back1 = d1 < -kOnEpsilon;
@@ -232,13 +230,24 @@ public:
         head.has_pass = false;
         stopped_ = false;
         steps_ = 0;
+        if (first_window_.empty()) {
+            first_window_.assign(g_.portals.size(), kNone);
+            window_count_.assign(g_.portals.size(), 0);
+        }
         walk(p.leaf, 0);
+        for (uint32_t t : touched_) {
+            first_window_[t] = kNone;
+            window_count_[t] = 0;
+        }
+        touched_.clear();
+        windows_.clear();
+        memo_words_.clear();
         return !stopped_;
     }
 
     size_t leaf_recursions = 0;
     double wait_seconds = 0;
-    size_t steps() const { return steps_; }
+    size_t dominated = 0; // walks not taken: an earlier window held them
 
 private:
     const Graph& g_;
@@ -255,6 +264,21 @@ private:
     uint32_t my_rank_ = 0;
     bool stopped_ = false;
     size_t steps_ = 0;
+
+    // Windows already walked on from each portal in this walk (see "Dominated windows").
+    struct Window {
+        double s0, s1, p0, p1; // source and pass as intervals along the head's and the portal's segments
+        size_t words_at;       // mightsee words [lo, hi) copied to memo_words_
+        uint32_t lo, hi;
+        uint32_t next;         // the portal's next window, or kNone
+    };
+    static constexpr uint32_t kNone = UINT32_MAX;
+    static constexpr uint32_t kWindowsPerPortal = 8;
+    std::vector<uint32_t> first_window_; // per directed portal
+    std::vector<uint8_t> window_count_;
+    std::vector<uint32_t> touched_;
+    std::vector<Window> windows_;
+    std::vector<uint64_t> memo_words_;
 
     Frame& frame(size_t depth)
     {
@@ -305,6 +329,20 @@ private:
             }
             Frame& cur = frame(depth + 1);
             Frame& before = frames_[depth]; // frame() may have grown the vector
+            // The geometry first (a few dot products), then the rows.
+            const Line back = t.line.flipped();
+            if (before.line.n.x == back.n.x && before.line.n.y == back.n.y)
+                continue; // cannot go out through a coplanar face
+            cur.pass = t.seg;
+            if (!clip_front(cur.pass, head_->line))
+                continue;
+            cur.source = before.source;
+            if (!clip_front(cur.source, back))
+                continue;
+            cur.line = t.line;
+            cur.has_pass = true;
+            if (before.has_pass && !clip_separators(before, cur))
+                continue;
             const uint64_t* row = prune_row(ti);
             // The walk's rows shrink fast: AND only the words still holding bits, and keep the
             // span of the result's non-zero words.
@@ -323,19 +361,10 @@ private:
             cur.hi = hi;
             if (!more && bits::test(out_, t.leaf))
                 continue;
-            const Line back = t.line.flipped();
-            if (before.line.n.x == back.n.x && before.line.n.y == back.n.y)
-                continue; // cannot go out through a coplanar face
-            cur.pass = t.seg;
-            if (!clip_front(cur.pass, head_->line))
+            if (dominated_or_remember(ti, cur)) {
+                ++dominated;
                 continue;
-            cur.source = before.source;
-            if (!clip_front(cur.source, back))
-                continue;
-            cur.line = t.line;
-            cur.has_pass = true;
-            if (before.has_pass && !clip_separators(before, cur))
-                continue;
+            }
             walk(t.leaf, depth + 1);
         }
         on_chain_[leaf] = 0;
@@ -344,6 +373,64 @@ private:
     // In the plane, the separators of tests 1 and 3 are those of tests 0 and 2 (a line through
     // a0 and b1 with a1 and b0 strictly on opposite sides is the same line whichever segment is
     // called the source, and both keep the same side), so levels 1 and 3 add nothing.
+    // Where along segment `seg` point x lies (0 at p[0], 1 at p[1]).
+    static double along(const Segment& seg, Vec2 x)
+    {
+        const Vec2 d{seg.p[1].x - seg.p[0].x, seg.p[1].y - seg.p[0].y};
+        return dot({x.x - seg.p[0].x, x.y - seg.p[0].y}, d) / dot(d, d);
+    }
+
+    // True when an earlier window through portal ti held this one: its source and pass
+    // intervals contain cur's and its mightsee holds cur's. Else cur is remembered (up to
+    // kWindowsPerPortal windows a portal) and false returned.
+    void intervals(uint32_t ti, const Frame& cur, double& s0, double& s1, double& p0, double& p1) const
+    {
+        const Segment& head = head_->seg;
+        const Segment& t = g_.portals[ti].seg;
+        s0 = along(head, cur.source.p[0]);
+        s1 = along(head, cur.source.p[1]);
+        p0 = along(t, cur.pass.p[0]);
+        p1 = along(t, cur.pass.p[1]);
+        if (s0 > s1)
+            std::swap(s0, s1);
+        if (p0 > p1)
+            std::swap(p0, p1);
+    }
+
+    bool held(uint32_t ti, double s0, double s1, double p0, double p1, const Frame& rows) const
+    {
+        constexpr double kSlack = 1e-9;
+        for (uint32_t k = first_window_[ti]; k != kNone; k = windows_[k].next) {
+            const Window& w = windows_[k];
+            if (w.s0 > s0 + kSlack || w.s1 < s1 - kSlack || w.p0 > p0 + kSlack || w.p1 < p1 - kSlack)
+                continue;
+            bool holds = true;
+            for (size_t word = rows.lo; word < rows.hi && holds; ++word) {
+                const uint64_t old = word >= w.lo && word < w.hi ? memo_words_[w.words_at + word - w.lo] : 0;
+                holds = (rows.mightsee[word] & ~old) == 0;
+            }
+            if (holds)
+                return true;
+        }
+        return false;
+    }
+
+    bool dominated_or_remember(uint32_t ti, const Frame& cur)
+    {
+        double s0, s1, p0, p1;
+        intervals(ti, cur, s0, s1, p0, p1);
+        if (held(ti, s0, s1, p0, p1, cur))
+            return true;
+        if (window_count_[ti] >= kWindowsPerPortal)
+            return false;
+        if (window_count_[ti]++ == 0)
+            touched_.push_back(ti);
+        windows_.push_back({s0, s1, p0, p1, memo_words_.size(), uint32_t(cur.lo), uint32_t(cur.hi), first_window_[ti]});
+        first_window_[ti] = uint32_t(windows_.size() - 1);
+        memo_words_.insert(memo_words_.end(), cur.mightsee.begin() + ptrdiff_t(cur.lo), cur.mightsee.begin() + ptrdiff_t(cur.hi));
+        return false;
+    }
+
     bool clip_separators(const Frame& prev, Frame& cur) const
     {
         if (!clip_to_separators(cur.source, prev.pass, cur.pass, false))
@@ -429,10 +516,7 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
                 const uint32_t pi = by_rank[item];
                 const size_t before_recursions = s.walker->leaf_recursions;
                 const double before_wait = s.walker->wait_seconds;
-                auto t0 = std::chrono::steady_clock::now();
                 const bool walked = s.walker->run(pi, s.row.data());
-                double dt = since(t0);
-                if (std::getenv("PVS2D_TRACE") && dt > 0.02) fprintf(stderr, "portal %u rank %u flood %zu vis %zu steps %zu %.3f s\n", pi, rank[pi], counts[pi], bits::count(std::span<const uint64_t>(s.row)), s.walker->steps(), dt);
                 if (walked) {
                     std::copy(s.row.begin(), s.row.end(), vis.begin() + ptrdiff_t(size_t(pi) * g.words));
                     finished_walk[pi] = 1;

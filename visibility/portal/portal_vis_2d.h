@@ -20,12 +20,26 @@
 // mirrored pass -> source at level >= 1), the source by pass -> target (level >= 2, mirrored
 // at level >= 3). In 2-D a separator is a line through an endpoint of one segment and an
 // endpoint of the other with the two other endpoints strictly on opposite sides: a sight line
-// from the first segment through the second stays on the second's side of it. Clips keep
-// points within ON_EPSILON ("on"), return a segment with no point behind unchanged, and drop
-// one with no point in front. A walk never re-enters a leaf on its own chain, and stops where
-// its mightsee (the AND of the mightsee or final vis of every portal passed) adds nothing not
-// yet visible to a leaf already visible, as vis does. Unlike glVIS there is no depth cap (its
-// cap of 256 can cut a sight line).
+// from the first segment through the second stays on the second's side of it. Such a line is
+// the same whichever segment is called the source and keeps the same side, so in the plane
+// tests 1 and 3 add nothing to tests 0 and 2 (levels 1 and 3 equal 0 and 2; 4 is taken as 3).
+// Clips keep points within ON_EPSILON ("on"), return a segment with no point behind unchanged,
+// and drop one with no point in front. A walk never re-enters a leaf on its own chain, and
+// stops where its mightsee (the AND of the mightsee or final vis of every portal passed) adds
+// nothing not yet visible to a leaf already visible, as vis does. Unlike glVIS there is no
+// depth cap (its cap of 256 can cut a sight line).
+//
+// Dominated windows (beyond glVIS). The state a walk carries past portal t is the source
+// interval (on p's segment), the pass interval (on t's segment) and the mightsee; the clips
+// only ever shrink all three, so a walk arriving at t with intervals inside those of an earlier
+// walk of the same source past t, and a mightsee inside its mightsee, can reach nothing the
+// earlier one did not: it is skipped. Up to 8 windows are remembered per portal and walk. On
+// Doom maps, whose tiny subsectors reach one portal by thousands of chains, this removes most
+// of the work (MAP10: 873 000 steps to 123 000 for its slowest portal; the whole bake 6.5 s ->
+// 1.3 s on 2 cores). Exactly, the result could only lose bits where the flow's own
+// approximations are not monotone (a source shorter than the epsilon finds no separator and
+// is clipped less than a longer one); on MAP10 it removes 36 of 526 000 bits, none of them a
+// bit the reference finds (tests/wld/test_doom_vis.cpp checks the reference on real maps).
 //
 // Determinism, threads, progress, cancellation: as bake_portal_vis. The directed portals are
 // ranked by increasing mightsee count (ties by index) and handed to the threads in rank order;
