@@ -123,6 +123,30 @@ INSTANTIATE_TEST_SUITE_P(Builders, DoomGlNodes,
                              return name;
                          });
 
+// Every map of both IWADs loads with GL nodes from glbsp (.gwa) and from zdbsp (in the WAD),
+// and both builders' trees agree with their own subsector polygons at the polygon centres.
+TEST(DoomMap, EveryFreedoomMapLoadsWithGlbspAndZdbspNodes)
+{
+    size_t maps = 0;
+    for (const char* iwad : {"freedoom1.wad", "freedoom2.wad"}) {
+        FREEDOOM_OR_SKIP(wad_path, iwad);
+        for (GlBuilder builder : {GlBuilder::glbsp_v2, GlBuilder::zdbsp_v2}) {
+            GL_NODES_OR_SKIP(gl_path, wad_path, builder);
+            const bool separate = gl_path.ends_with(".gwa");
+            const WadFile wad = read_wad(separate ? wad_path : gl_path);
+            const std::optional<WadFile> gl = separate ? std::optional<WadFile>(read_wad(gl_path)) : std::nullopt;
+            for (const std::string& name : map_names(wad)) {
+                const DoomMap map = read_doom_map(wad, gl ? &*gl : nullptr, name);
+                const Zone zone = build_doom_zone(map, nullptr);
+                EXPECT_EQ(zone.region_count(), map.subsectors.size()) << iwad << " " << name;
+                EXPECT_GT(zone.mesh.triangle_count(), 0u) << iwad << " " << name;
+                ++maps;
+            }
+        }
+    }
+    EXPECT_EQ(maps, 2u * (36 + 32));
+}
+
 TEST(DoomMap, Freedoom1HasEveryEpisodeMap)
 {
     FREEDOOM_OR_SKIP(wad_path, "freedoom1.wad");

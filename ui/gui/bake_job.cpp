@@ -1,6 +1,6 @@
 #include "ui/gui/bake_job.h"
 
-#include "visibility/portal/portalize.h"
+#include "visibility/methods/vis_method.h"
 
 #include <exception>
 #include <utility>
@@ -47,8 +47,6 @@ void BakeJob::run(const Zone& zone, BakeRequest request)
     size_t portals = 0;
     std::string error;
     try {
-        const PortalSet set = zone.portals ? *zone.portals : build_zone_portals(zone);
-        portals = set.portals.size();
         VisParams params;
         params.method = request.method;
         params.level = request.level;
@@ -60,7 +58,7 @@ void BakeJob::run(const Zone& zone, BakeRequest request)
             return !cancel_.load();
         };
         if (!cancel_)
-            pvs = bake_portal_vis(set, uint32_t(zone.region_count()), params, &report);
+            pvs = bake_zone_portal_vis(zone, params, false, &report, &portals);
     } catch (const std::exception& e) {
         error = e.what();
     }

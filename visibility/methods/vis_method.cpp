@@ -98,16 +98,17 @@ MethodRun run_none(const Zone&, const MethodSettings&)
     return run;
 }
 
+bool uses_2d_vis(const Zone& zone, bool heights) { return zone.tree.has_height_nodes() && !heights; }
+
 MethodRun run_portal(const Zone& zone, const MethodSettings& s, VisParams::Method method, const char* name)
 {
     const auto start = std::chrono::steady_clock::now();
     VisReport report;
-    if (zone.tree.has_height_nodes() && !s.heights) { // an extruded 2-D map: glVIS's 2-D vis
-        Pvs pvs = bake_portal_vis_2d(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
-        return run_from_report(std::move(pvs), report, seconds_since(start), std::string(name) + " (2-D)");
-    }
-    Pvs pvs = bake_portal_vis(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
-    return run_from_report(std::move(pvs), report, seconds_since(start), name);
+    Pvs pvs = uses_2d_vis(zone, s.heights)
+                  ? bake_portal_vis_2d(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report)
+                  : bake_portal_vis(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
+    return run_from_report(std::move(pvs), report, seconds_since(start),
+                           uses_2d_vis(zone, s.heights) ? std::string(name) + " (2-D)" : std::string(name));
 }
 
 MethodRun run_portal_fast(const Zone& zone, const MethodSettings& s)
@@ -264,6 +265,20 @@ const char* bound_name(Bound bound)
     case Bound::Unknown: break;
     }
     return "unknown";
+}
+
+Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights, VisReport* report,
+                         size_t* portal_count)
+{
+    MethodSettings s;
+    s.heights = heights;
+    const bool own = zone.portals && !zone.tree.has_height_nodes();
+    const PortalSet built = own ? PortalSet{} : zone_portals(zone, s);
+    const PortalSet& set = own ? *zone.portals : built;
+    if (portal_count)
+        *portal_count = set.portals.size();
+    return uses_2d_vis(zone, heights) ? bake_portal_vis_2d(set, uint32_t(zone.region_count()), params, report)
+                                      : bake_portal_vis(set, uint32_t(zone.region_count()), params, report);
 }
 
 std::span<const VisMethod> vis_methods() { return kMethods; }

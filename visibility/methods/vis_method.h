@@ -22,6 +22,7 @@
 #pragma once
 
 #include "visibility/portal/media.h"
+#include "visibility/portal/portal_vis.h"
 #include "visibility/pvs.h"
 #include "visibility/raster/raster_vis.h"
 #include "visibility/reference/reference_vis.h"
@@ -88,6 +89,13 @@ struct VisMethod {
 };
 
 std::span<const VisMethod> vis_methods();
+
+// portal-fast / portal-full as the registry runs them, for callers with their own VisParams
+// (the inspector's Bake panel): the zone's own portals when it carries them, else portals built
+// from its tree; an extruded 2-D map (Doom) without `heights` gets the 2-D baker on its column
+// portals. `portal_count`, when given, receives the number of portals used.
+Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights, VisReport* report,
+                         size_t* portal_count = nullptr);
 // nullptr when no method has that name.
 const VisMethod* find_vis_method(std::string_view name);
 // "file, none, portal-fast, ..." for messages and --help.

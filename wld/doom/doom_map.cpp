@@ -278,9 +278,10 @@ void read_gl_subsectors(const WadFile& wad, size_t lump, DoomMap& map)
         GlSubsector& s = map.subsectors[i];
         s.seg_count = wide ? v.read<uint32_t>(at, "subsector seg count") : v.read<uint16_t>(at, "subsector seg count");
         s.first_seg = wide ? v.read<uint32_t>(at + 4, "subsector first seg") : v.read<uint16_t>(at + 2, "subsector first seg");
-        if (s.seg_count < 3 || uint64_t(s.first_seg) + s.seg_count > map.segs.size())
+        // Fewer than three segs is a degenerate sliver (zdbsp writes some on Freedoom): kept, with no area.
+        if (s.seg_count == 0 || uint64_t(s.first_seg) + s.seg_count > map.segs.size())
             v.fail(at, "subsector " + std::to_string(i) + " segs " + std::to_string(s.first_seg) + " + " +
-                           std::to_string(s.seg_count) + " are not a polygon inside the " +
+                           std::to_string(s.seg_count) + " are not a range inside the " +
                            std::to_string(map.segs.size()) + " segs");
         bool found = false;
         for (uint32_t k = 0; k < s.seg_count && !found; ++k) {
@@ -376,7 +377,9 @@ size_t gl_lump(const WadFile& file, size_t marker, size_t offset, const char* na
     const size_t i = marker + offset;
     if (i >= file.lumps.size() || file.lumps[i].name != name)
         throw FileError(file.path, file.lumps[marker].directory_offset,
-                        "GL group " + file.lumps[marker].name + ": lump " + std::to_string(offset) + " after the marker is not " + name);
+                        "GL group " + file.lumps[marker].name + ": no " + name + " at marker + " + std::to_string(offset) +
+                            " (found " + (i < file.lumps.size() ? "'" + file.lumps[i].name + "'" : "the end of the directory") +
+                            "; glBSP writes GL_VERT, GL_SEGS, GL_SSECT, GL_NODES in this order)");
     return i;
 }
 
@@ -385,10 +388,12 @@ void read_gl_group(const WadFile& file, size_t marker, DoomMap& map)
     map.source.gl_path = file.path;
     map.source.gl_marker = marker;
     map.gl_builder = keyword(marker_text(file, marker), "BUILDER");
-    read_gl_vertices(file, gl_lump(file, marker, 1, "GL_VERT"), map);
-    read_gl_segs(file, gl_lump(file, marker, 2, "GL_SEGS"), segs_used(file, gl_lump(file, marker, 3, "GL_SSECT"), map), map);
-    read_gl_subsectors(file, gl_lump(file, marker, 3, "GL_SSECT"), map);
-    read_gl_nodes(file, gl_lump(file, marker, 4, "GL_NODES"), map);
+    const size_t vert = gl_lump(file, marker, 1, "GL_VERT"), segs = gl_lump(file, marker, 2, "GL_SEGS"),
+                 ssect = gl_lump(file, marker, 3, "GL_SSECT"), nodes = gl_lump(file, marker, 4, "GL_NODES");
+    read_gl_vertices(file, vert, map);
+    read_gl_segs(file, segs, segs_used(file, ssect, map), map);
+    read_gl_subsectors(file, ssect, map);
+    read_gl_nodes(file, nodes, map);
     const size_t pvs = marker + 5;
     if (pvs < file.lumps.size() && file.lumps[pvs].name == "GL_PVS") {
         map.source.gl_pvs_present = true;

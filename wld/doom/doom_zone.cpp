@@ -361,6 +361,16 @@ private:
     }
 };
 
+// The WAD's maps, for `info` (a user picks one with --map).
+void note_maps(Zone& zone, const WadFile& wad)
+{
+    const std::vector<std::string> names = map_names(wad);
+    std::string list;
+    for (const std::string& n : names)
+        list += (list.empty() ? "" : " ") + n;
+    zone.source.notes.push_back(std::to_string(names.size()) + " maps in the WAD (--map NAME): " + list);
+}
+
 } // namespace
 
 Zone build_doom_zone(const DoomMap& map, const DoomTextures* textures) { return ZoneBuilder(map, textures).build(); }
@@ -377,7 +387,9 @@ Zone load_doom_zone(const std::string& path, const std::string& map_name, const 
         const WadFile wad = read_wad(wad_path);
         const WadFile gwa = read_wad(path);
         const DoomTextures textures(wad);
-        return build_doom_zone(read_doom_map(wad, &gwa, map_name), &textures);
+        Zone zone = build_doom_zone(read_doom_map(wad, &gwa, map_name), &textures);
+        note_maps(zone, wad);
+        return zone;
     }
     const WadFile wad = read_wad(path);
     const std::string gwa_path = gwa_path_given.empty() ? gwa_path_for(path) : gwa_path_given;
@@ -385,7 +397,9 @@ Zone load_doom_zone(const std::string& path, const std::string& map_name, const 
     if (!gwa_path_given.empty() || (fs::exists(gwa_path, ec) && gwa_path != path))
         gwa = read_wad(gwa_path);
     const DoomTextures textures(wad);
-    return build_doom_zone(read_doom_map(wad, gwa ? &*gwa : nullptr, map_name), &textures);
+    Zone zone = build_doom_zone(read_doom_map(wad, gwa ? &*gwa : nullptr, map_name), &textures);
+    note_maps(zone, wad);
+    return zone;
 }
 
 std::string next_map_name(const std::string& name, bool secret)
