@@ -174,17 +174,19 @@ bool clip_to_separators(const Segment& source, const Segment& pass, Segment& tar
                 continue;
             // The candidate's unnormalised normal: distances are compared against the epsilon
             // times its length, so only the line that is used needs a square root.
+            // (|d| <= eps * length is tested as d^2 <= eps^2 * length^2: no square root for the
+            // candidates that fail.)
             Vec2 n{-v.y, v.x};
-            const double length = std::sqrt(length2);
-            const double limit = kOnEpsilon * length;
+            const double limit2 = kOnEpsilon * kOnEpsilon * length2;
             double ds = n.x * (other_a.x - b.x) + n.y * (other_a.y - b.y);
-            if (std::abs(ds) <= limit)
+            if (ds * ds <= limit2)
                 continue; // the source lies along it
             if (ds > 0)
                 n = {-n.x, -n.y}; // the source behind
             const double dp = n.x * (pass.p[1 - j].x - b.x) + n.y * (pass.p[1 - j].y - b.y);
-            if (!(dp > limit))
+            if (!(dp > 0 && dp * dp > limit2))
                 continue; // the pass not strictly in front: not a separator
+            const double length = std::sqrt(length2);
             if (flip)
                 n = {-n.x, -n.y};
             Line sep{{n.x / length, n.y / length}, 0};
