@@ -13,6 +13,7 @@
 #include "visibility/portal/portalize.h"
 #include "wld/common/read_file.h"
 #include "wld/convert.h"
+#include "wld/doom/doom_specials.h"
 #include "wld/doom/doom_zone.h"
 #include "wld/doom/gl_pvs_writer.h"
 #include "wld/eq/eq_zone_reader.h"
@@ -176,6 +177,15 @@ Input load_doom_input(const BakeOptions& o)
     for (const doom::GlSubsector& ss : map.subsectors)
         in.sector_of_subsector.push_back(ss.sector);
     in.sector_count = uint32_t(map.sectors.size());
+    if (o.heights) {
+        const std::vector<bool> moving = doom::moving_sectors(map);
+        const size_t count = size_t(std::count(moving.begin(), moving.end(), true));
+        if (count > 0)
+            std::fprintf(stderr,
+                         "warning: --heights: %zu of %zu sectors of %s move (doors, lifts, floors, crushers): they "
+                         "block sight as built, so a door that opens can show what the PVS hides\n",
+                         count, moving.size(), map.name.c_str());
+    }
     return in;
 }
 

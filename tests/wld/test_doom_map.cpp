@@ -182,3 +182,45 @@ TEST(DoomMap, NextMapNamesFollowTheEngines)
 }
 
 } // namespace
+
+#include "wld/doom/doom_specials.h"
+
+namespace {
+
+// Five sectors: 0 behind a manual door (special 1), 1 tagged by a lift (62, tag 7), 2 tagged by
+// a light-only special (12, tag 8: does not move), 3 with sector special 10 (door closes after
+// 30 s), 4 tagged 7 too but also a Boom generalized floor's target (tag 9).
+TEST(DoomSpecials, MovingSectorsByLineAndSectorSpecials)
+{
+    using namespace pvs::doom;
+    DoomMap map;
+    map.sectors.resize(5);
+    map.sectors[1].tag = 7;
+    map.sectors[2].tag = 8;
+    map.sectors[3].special = 10;
+    map.sectors[4].tag = 9;
+    map.sidedefs.resize(2);
+    map.sidedefs[0].sector = 2; // front of the door line
+    map.sidedefs[1].sector = 0; // behind it
+    Linedef door;
+    door.special = 1;
+    door.side[0] = 0;
+    door.side[1] = 1;
+    Linedef lift;
+    lift.special = 62;
+    lift.tag = 7;
+    Linedef light;
+    light.special = 12;
+    light.tag = 8;
+    Linedef generalized;
+    generalized.special = 0x6000 + 0x47; // a Boom generalized floor
+    generalized.tag = 9;
+    map.linedefs = {door, lift, light, generalized};
+    const std::vector<bool> moving = moving_sectors(map);
+    EXPECT_EQ(moving, (std::vector<bool>{true, true, false, true, true}));
+    EXPECT_FALSE(special_moves_heights(0));
+    EXPECT_FALSE(special_moves_heights(12));
+    EXPECT_TRUE(special_moves_heights(62));
+}
+
+} // namespace

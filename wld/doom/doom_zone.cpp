@@ -3,6 +3,7 @@
 #include "visibility/codec/glvis_rows.h"
 #include "visibility/bit_row.h"
 #include "visibility/file_error.h"
+#include "wld/doom/doom_specials.h"
 #include "wld/doom/doom_textures.h"
 
 #include <algorithm>
@@ -159,6 +160,14 @@ private:
         return index;
     }
 
+    // The sky drawn where two sky ceilings meet at different heights.
+    uint32_t sky_wall_material()
+    {
+        const uint32_t m = material("F_SKY1", true);
+        zone_.materials[m].flags |= kMaterialSky;
+        return m;
+    }
+
     // Starts a face; returns its index.
     uint32_t begin_face(uint32_t material_index)
     {
@@ -229,15 +238,19 @@ private:
     }
 
     // A wall quad along seg a->b from z0 up to z1, facing the seg's right side.
-    void add_wall(const GlSeg& seg, float z0, float z1, const std::string& texture, std::vector<uint32_t>& faces)
+    // A wall blocks sight whatever its texture says: a missing one ("-", the engines' hall of
+    // mirrors) gets the untextured material "-"; `sky` makes it a sky wall (the upper part
+    // between two sky ceilings, which the engines fill with sky).
+    void add_wall(const GlSeg& seg, float z0, float z1, const std::string& texture, std::vector<uint32_t>& faces,
+                  bool sky = false)
     {
-        if (!(z1 > z0) || texture.empty() || texture == "-")
+        if (!(z1 > z0))
             return;
         const glm::vec2 a = point(map_, seg.v1), b = point(map_, seg.v2);
         const Linedef& line = map_.linedefs[seg.linedef];
         const Sidedef& side = map_.sidedefs[size_t(line.side[seg.side])];
         const glm::vec2 line_start = point(map_, seg.side == 0 ? line.v1 : line.v2);
-        const uint32_t m = material(texture, false);
+        const uint32_t m = sky ? sky_wall_material() : material(texture.empty() ? "-" : texture, false);
         const float w = float(zone_.materials[m].width), h = float(zone_.materials[m].height);
         const float u0 = (glm::distance(line_start, a) + side.x_offset) / w;
         const float u1 = u0 + glm::distance(a, b) / w;
@@ -266,8 +279,7 @@ private:
             const Sector& back = map_.sectors[map_.sidedefs[size_t(back_side)].sector];
             add_wall(seg, front.floor_height, back.floor_height, side.lower, faces);
             const bool both_sky = front.ceiling_flat.rfind("F_SKY", 0) == 0 && back.ceiling_flat.rfind("F_SKY", 0) == 0;
-            if (!both_sky)
-                add_wall(seg, back.ceiling_height, front.ceiling_height, side.upper, faces);
+            add_wall(seg, back.ceiling_height, front.ceiling_height, side.upper, faces, both_sky);
         }
     }
 
@@ -355,6 +367,8 @@ private:
         src.counts.emplace_back("segs", map_.segs.size());
         src.counts.emplace_back("subsectors", map_.subsectors.size());
         src.counts.emplace_back("nodes", map_.nodes.size());
+        const std::vector<bool> moving = moving_sectors(map_);
+        src.counts.emplace_back("sectors.moving", size_t(std::count(moving.begin(), moving.end(), true)));
         src.notes.insert(src.notes.begin(), "map " + map_.name + (map_.hexen ? " (Hexen format)" : "") + ", GL nodes from " +
                                                 map_.source.gl_path + (map_.gl_builder.empty() ? "" : " (" + map_.gl_builder + ")"));
         src.notes.push_back("tree: GL BSP + one-sided wall segs + floors and ceilings as built (heights are static here)");

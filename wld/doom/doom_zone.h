@@ -14,9 +14,10 @@
 //     height-aware option keeps them. Heights are the map as built (doors closed, lifts up).
 // The mesh: per subsector a floor and a ceiling polygon; per wall seg a wall from floor to
 // ceiling; per two-sided seg the lower part (own floor up to the neighbour's floor) and the
-// upper part (the neighbour's ceiling up to own ceiling; none when both ceilings are sky, the
-// engines' sky hack). Masked middle textures of two-sided lines are left out (sight goes
-// through them). Faces face into their subsector and are listed by it. Materials are the
+// upper part (the neighbour's ceiling up to own ceiling; a sky wall when both ceilings are sky,
+// which the engines fill with sky). Walls are made whatever their texture: a missing one ("-")
+// still blocks sight (material "-", no pixels). Masked middle textures of two-sided lines are
+// left out (sight goes through them). Faces face into their subsector and are listed by it. Materials are the
 // flats and wall textures by name, with pixels when the WAD has them (doom_textures.h);
 // F_SKY1 ceilings are sky materials.
 // Flags: damaging floors by sector special — 7 (5%/nukage) slime; 5, 16, 4, 11 (10-20%) lava;
