@@ -177,7 +177,8 @@ void measure_walk(const Zone& zone, const CompareOptions& o, CompareResult& resu
 
 } // namespace
 
-std::vector<CompareEntry> compare_entries(const std::string& name, const CompareOptions& options, bool grid_zone)
+std::vector<CompareEntry> compare_entries(const std::string& name, const CompareOptions& options, bool grid_zone,
+                                          bool extruded)
 {
     const VisMethod* method = find_vis_method(name);
     if (!method)
@@ -204,6 +205,17 @@ std::vector<CompareEntry> compare_entries(const std::string& name, const Compare
     if (name != "portal-full")
         return {{name, base}};
     std::vector<CompareEntry> entries;
+    if (extruded) {
+        for (int level : {0, 2}) {
+            CompareEntry e{name, base};
+            e.settings.level = level;
+            entries.push_back(e);
+        }
+        CompareEntry heights{name, base};
+        heights.settings.heights = true;
+        entries.push_back(heights);
+        return entries;
+    }
     for (int level = kLowestComparedLevel; level <= 4; ++level) {
         CompareEntry e{name, base};
         e.settings.level = level;
@@ -223,7 +235,7 @@ CompareResult run_compare(const Zone& zone, const CompareOptions& options)
     for (const std::string& name : options.methods.empty() ? all_methods(zone) : options.methods) {
         if (name == "reference")
             continue; // always baked, first
-        std::vector<CompareEntry> more = compare_entries(name, options, zone.view_grid.has_value());
+        std::vector<CompareEntry> more = compare_entries(name, options, zone.view_grid.has_value(), zone.tree.has_height_nodes());
         if (more.empty())
             throw std::invalid_argument("unknown method '" + name + "' (" + vis_method_names() + ")");
         entries.insert(entries.end(), more.begin(), more.end());

@@ -78,8 +78,11 @@ struct CompareResult {
 // The entries a method name stands for (portal-full: levels 1-4 and its switches); empty for an
 // unknown name.
 // grid_zone: the zone has a view grid (raster's points are then per cell, in open space).
+// extruded: a 2-D map (Doom, BspTree::has_height_nodes): portal-full runs the 2-D baker at
+// levels 0 and 2 (1 and 3 are the same there, passages and target checks do not apply) and the
+// 3-D baker with --heights.
 std::vector<CompareEntry> compare_entries(const std::string& method, const CompareOptions& options,
-                                          bool grid_zone = false);
+                                          bool grid_zone = false, bool extruded = false);
 
 // Throws std::invalid_argument for an unknown method name, and what the reference throws (a zone
 // without a tree).

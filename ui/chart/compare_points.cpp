@@ -18,7 +18,8 @@ std::string short_label(const CompareRow& r)
 {
     if (r.method == "portal-full" || r.method == "clustered")
         return r.method + " L" + param(r.params, "level") + (param(r.params, "passages") == "off" ? " -passages" : "") +
-               (param(r.params, "target-checks") == "off" ? " -checks" : "");
+               (param(r.params, "target-checks") == "off" ? " -checks" : "") +
+               (r.params.ends_with(" heights") ? " heights" : "");
     if (r.method == "reference")
         return r.method + " " + param(r.params, "samples");
     return r.method;

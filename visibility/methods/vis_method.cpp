@@ -35,7 +35,8 @@ const char* on_off(bool b) { return b ? "on" : "off"; }
 std::string no_label(const MethodSettings&) { return {}; }
 std::string full_label(const MethodSettings& s)
 {
-    return format("level=%d passages=%s target-checks=%s", s.level, on_off(s.passages), on_off(s.target_checks));
+    return format("level=%d passages=%s target-checks=%s%s", s.level, on_off(s.passages), on_off(s.target_checks),
+                  s.heights ? " heights" : "");
 }
 std::string reference_label(const MethodSettings& s)
 {

@@ -43,7 +43,7 @@
 //
 // Determinism, threads, progress, cancellation: as bake_portal_vis. The directed portals are
 // ranked by increasing mightsee count (ties by index) and handed to the threads in rank order;
-// a walk prunes with the final vis of portals ranked more than kPruneLag below its own
+// a walk prunes with the final vis of portals ranked more than 8 below its own
 // (waiting for one still being walked) and with the mightsee of the others, so the result is
 // a fixed function of the input and the level, whatever the thread count. Cancelling returns
 // the finished portals' vis and the unfinished ones' mightsee (conservative).

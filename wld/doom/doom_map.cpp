@@ -11,24 +11,6 @@ namespace pvs::doom {
 
 namespace {
 
-std::string upper(std::string s)
-{
-    for (char& c : s)
-        c = char(std::toupper(uint8_t(c)));
-    return s;
-}
-
-std::string texture_name(std::span<const uint8_t> raw)
-{
-    std::string name;
-    for (uint8_t c : raw) {
-        if (c == 0)
-            break;
-        name.push_back(char(std::toupper(c)));
-    }
-    return name;
-}
-
 // A lump of the WAD read through a ByteReader whose offsets are absolute in the file, so errors
 // name the byte where the bad record sits.
 struct LumpView {
@@ -96,7 +78,7 @@ std::optional<size_t> find_gl_marker(const WadFile& wad, const std::string& name
         if (auto i = wad.find_last("GL_" + name))
             return i;
     for (size_t i = wad.lumps.size(); i-- > 0;)
-        if (wad.lumps[i].name == "GL_LEVEL" && upper(keyword(marker_text(wad, i), "LEVEL")) == name)
+        if (wad.lumps[i].name == "GL_LEVEL" && upper_case(keyword(marker_text(wad, i), "LEVEL")) == name)
             return i;
     return std::nullopt;
 }
@@ -147,9 +129,9 @@ void read_sidedefs(const WadFile& wad, size_t lump, DoomMap& map)
         Sidedef& s = map.sidedefs[i];
         s.x_offset = v.read<int16_t>(at, "sidedef x offset");
         s.y_offset = v.read<int16_t>(at + 2, "sidedef y offset");
-        s.upper = texture_name(v.reader.bytes(v.base + at + 4, 8, "sidedef upper texture"));
-        s.lower = texture_name(v.reader.bytes(v.base + at + 12, 8, "sidedef lower texture"));
-        s.middle = texture_name(v.reader.bytes(v.base + at + 20, 8, "sidedef middle texture"));
+        s.upper = wad_name(v.reader.bytes(v.base + at + 4, 8, "sidedef upper texture"));
+        s.lower = wad_name(v.reader.bytes(v.base + at + 12, 8, "sidedef lower texture"));
+        s.middle = wad_name(v.reader.bytes(v.base + at + 20, 8, "sidedef middle texture"));
         s.sector = v.read<uint16_t>(at + 28, "sidedef sector");
     }
 }
@@ -164,8 +146,8 @@ void read_sectors(const WadFile& wad, size_t lump, DoomMap& map)
         Sector& s = map.sectors[i];
         s.floor_height = v.read<int16_t>(at, "sector floor");
         s.ceiling_height = v.read<int16_t>(at + 2, "sector ceiling");
-        s.floor_flat = texture_name(v.reader.bytes(v.base + at + 4, 8, "sector floor flat"));
-        s.ceiling_flat = texture_name(v.reader.bytes(v.base + at + 12, 8, "sector ceiling flat"));
+        s.floor_flat = wad_name(v.reader.bytes(v.base + at + 4, 8, "sector floor flat"));
+        s.ceiling_flat = wad_name(v.reader.bytes(v.base + at + 12, 8, "sector ceiling flat"));
         s.light = v.read<int16_t>(at + 20, "sector light");
         s.special = v.read<int16_t>(at + 22, "sector special");
         s.tag = v.read<int16_t>(at + 24, "sector tag");
@@ -424,7 +406,7 @@ DoomMap read_doom_map(const WadFile& wad, const WadFile* gwa, const std::string&
     if (names.empty())
         throw FileError(wad.path, 0, "no map in this WAD (no marker lump followed by THINGS and LINEDEFS)");
     DoomMap map;
-    map.name = name.empty() ? names.front() : upper(name);
+    map.name = name.empty() ? names.front() : upper_case(name);
     std::optional<size_t> marker;
     for (size_t i = wad.lumps.size(); i-- > 0;)
         if (wad.lumps[i].name == map.name && is_map_marker(wad, i)) {

@@ -20,26 +20,6 @@ using Palette = std::array<uint8_t, 768>;
 constexpr uint64_t kStepsPerTexel = 32;
 constexpr uint64_t kBaseSteps = uint64_t(1) << 22;
 
-std::string upper(const std::string& name)
-{
-    std::string out = name;
-    for (char& c : out)
-        c = char(std::toupper(static_cast<unsigned char>(c)));
-    return out;
-}
-
-// An 8-character name field: upper case, ending at the first NUL.
-std::string name_field(std::span<const uint8_t> raw)
-{
-    std::string name;
-    for (uint8_t c : raw) {
-        if (c == 0)
-            break;
-        name.push_back(char(std::toupper(c)));
-    }
-    return name;
-}
-
 // A reader with absolute file offsets (for the messages) whose data ends where the lump ends,
 // so a read past the lump fails like a read past the file. Reads never start before the lump:
 // every offset below is the lump's own offset plus something non-negative.
@@ -121,7 +101,7 @@ std::vector<std::optional<size_t>> resolve_patch_names(const WadFile& wad)
         std::vector<std::optional<size_t>> patches;
         patches.reserve(size_t(count));
         for (int32_t k = 0; k < count; ++k) {
-            const auto found = last_of_name.find(name_field(reader.bytes(base + 4 + uint64_t(k) * 8, 8, "name")));
+            const auto found = last_of_name.find(wad_name(reader.bytes(base + 4 + uint64_t(k) * 8, 8, "name")));
             patches.push_back(found == last_of_name.end() ? std::nullopt : std::optional<size_t>(found->second));
         }
         return patches;
@@ -279,13 +259,13 @@ void DoomTextures::index_textures(const WadFile& wad, size_t lump, std::unordere
         if (offset < 0)
             reader.fail(entry, "negative texture offset " + std::to_string(offset));
         const uint64_t at = base + uint64_t(offset);
-        out.try_emplace(name_field(reader.bytes(at, 8, "texture name")), TextureRecord{lump, at});
+        out.try_emplace(wad_name(reader.bytes(at, 8, "texture name")), TextureRecord{lump, at});
     }
 }
 
 std::optional<DoomImage> DoomTextures::flat(const std::string& name) const
 {
-    const auto found = flats_.find(upper(name));
+    const auto found = flats_.find(upper_case(name));
     if (!has_palette_ || found == flats_.end())
         return std::nullopt;
     const std::span<const uint8_t> raw = wad_.data(found->second);
@@ -302,7 +282,7 @@ std::optional<DoomImage> DoomTextures::flat(const std::string& name) const
 
 std::optional<DoomImage> DoomTextures::wall(const std::string& name) const
 {
-    const auto found = textures_.find(upper(name));
+    const auto found = textures_.find(upper_case(name));
     if (!has_palette_ || found == textures_.end())
         return std::nullopt;
     const TextureRecord& record = found->second;

@@ -12,17 +12,6 @@ namespace pvs::doom {
 
 namespace {
 
-std::string lump_name(std::span<const uint8_t> raw)
-{
-    std::string name;
-    for (uint8_t c : raw) {
-        if (c == 0)
-            break;
-        name.push_back(char(std::toupper(c)));
-    }
-    return name;
-}
-
 // Two lumps overlap when their byte ranges share a byte, unless they are the very same range
 // (one lump listed twice).
 void check_overlaps(const WadFile& wad, const ByteReader& reader)
@@ -50,6 +39,24 @@ void check_overlaps(const WadFile& wad, const ByteReader& reader)
 }
 
 } // namespace
+
+std::string wad_name(std::span<const uint8_t> raw)
+{
+    std::string name;
+    for (uint8_t c : raw) {
+        if (c == 0)
+            break;
+        name.push_back(char(std::toupper(c)));
+    }
+    return name;
+}
+
+std::string upper_case(std::string name)
+{
+    for (char& c : name)
+        c = char(std::toupper(static_cast<unsigned char>(c)));
+    return name;
+}
 
 std::optional<size_t> WadFile::find_last(const std::string& name) const
 {
@@ -93,7 +100,7 @@ WadFile parse_wad(std::vector<uint8_t> bytes, std::string path)
     for (int32_t i = 0; i < count; ++i) {
         const uint64_t at = uint64_t(directory) + uint64_t(i) * 16;
         WadLump& lump = wad.lumps[size_t(i)];
-        lump.name = lump_name(reader.bytes(at + 8, 8, "lump name"));
+        lump.name = wad_name(reader.bytes(at + 8, 8, "lump name"));
         lump.directory_offset = uint32_t(at);
         const int32_t offset = reader.read<int32_t>(at, "lump offset");
         const int32_t size = reader.read<int32_t>(at + 4, "lump size");

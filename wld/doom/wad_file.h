@@ -48,6 +48,11 @@ WadFile parse_wad(std::vector<uint8_t> bytes, std::string path);
 // Reads and parses a WAD or .gwa file. Throws FileError.
 WadFile read_wad(const std::string& path);
 
+// A name field of a WAD (lump, texture, flat: 8 bytes): upper case, ending at the first NUL or
+// after the field. upper_case: any name in upper case (WAD names compare case-insensitively).
+std::string wad_name(std::span<const uint8_t> raw);
+std::string upper_case(std::string name);
+
 // True when the bytes start like a WAD ("IWAD" or "PWAD").
 bool looks_like_wad(std::span<const uint8_t> bytes);
 
