@@ -1,7 +1,7 @@
 #include "app/cmd_info.h"
 
 #include "app/zone_load_args.h"
-#include "app/zone_report.h"
+#include "report/zone_report.h"
 #include "visibility/file_error.h"
 #include "visibility/zone_stats.h"
 #include "wld/zone_file.h"

@@ -8,6 +8,7 @@
 #include "app/cmd_info.h"
 #include "app/cmd_inspect.h"
 #include "app/cmd_render.h"
+#include "app/cmd_stats.h"
 #include "app/cmd_walk.h"
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,7 @@ int main(int argc, char** argv)
     app.require_subcommand(0, 1);
     int exit_code = 0;
     pvs::app::register_info_command(app, exit_code);
+    pvs::app::register_stats_command(app, exit_code);
     pvs::app::register_render_command(app, exit_code);
     pvs::app::register_gen_command(app, exit_code);
     pvs::app::register_walk_command(app, exit_code);

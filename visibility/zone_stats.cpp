@@ -18,15 +18,25 @@ PvsDensity compute_pvs_density(const Pvs& pvs)
     if (d.rows == 0)
         return d;
     std::vector<uint64_t> row(pvs.words_per_row());
+    std::vector<uint32_t> counts(d.rows);
     uint64_t total = 0;
     d.min_visible = std::numeric_limits<uint32_t>::max();
     for (uint32_t r = 0; r < d.rows; ++r) {
         pvs.decode_row(r, row);
         const auto visible = static_cast<uint32_t>(bits::count(row));
+        counts[r] = visible;
         total += visible;
         d.min_visible = std::min(d.min_visible, visible);
         d.max_visible = std::max(d.max_visible, visible);
     }
+    std::sort(counts.begin(), counts.end());
+    const auto percentile = [&](uint32_t p) { // nearest rank
+        const size_t rank = (size_t(p) * counts.size() + 99) / 100;
+        return counts[std::max<size_t>(rank, 1) - 1];
+    };
+    d.p50_visible = percentile(50);
+    d.p90_visible = percentile(90);
+    d.p99_visible = percentile(99);
     d.mean_visible = static_cast<double>(total) / static_cast<double>(d.rows);
     d.mean_percent = pvs.region_count() ? 100.0 * d.mean_visible / pvs.region_count() : 0.0;
     return d;

@@ -17,6 +17,9 @@ struct PvsDensity {
     double mean_visible = 0;   // mean set bits per row
     uint32_t min_visible = 0;
     uint32_t max_visible = 0;
+    // Percentiles of the visible count per row (nearest rank: the smallest count with at least
+    // p % of the rows at or below it).
+    uint32_t p50_visible = 0, p90_visible = 0, p99_visible = 0;
     double mean_percent = 0;   // mean_visible as a percentage of the region count
     size_t memory_bytes = 0;
     bool dense = false;

@@ -1,8 +1,9 @@
 // InspectorState's statistics export: the zone report `pvscope info --json` prints
-// (app/zone_report.h) plus the culling stats gathered since the zone was opened.
+// (report/zone_report.h) plus the culling stats gathered since the zone was opened.
 #include "ui/gui/inspector_state.h"
 
-#include "app/zone_report.h"
+#include "report/json_csv.h"
+#include "report/zone_report.h"
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -64,25 +65,9 @@ nlohmann::json stats_json(const InspectorState& state)
 {
     if (!state.has_zone())
         return nlohmann::json::object();
-    nlohmann::json report = app::zone_report_json(state.zone(), state.zone_stats(), state.load_ms());
+    nlohmann::json report = zone_report_json(state.zone(), state.zone_stats(), state.load_ms());
     report["culling"] = culling_json(state);
     return report;
-}
-
-// Scalars of `value` as (dotted name, CSV text); arrays are skipped (lists do not fit one row).
-void flatten(const nlohmann::json& value, const std::string& name, std::vector<std::pair<std::string, std::string>>& out)
-{
-    if (value.is_object()) {
-        for (const auto& [key, child] : value.items())
-            flatten(child, name.empty() ? key : name + "." + key, out);
-    } else if (value.is_string()) {
-        std::string text = "\"";
-        for (char c : value.get<std::string>())
-            text += c == '"' ? std::string("\"\"") : std::string(1, c);
-        out.emplace_back(name, text + "\"");
-    } else if (!value.is_array()) {
-        out.emplace_back(name, value.dump());
-    }
 }
 
 } // namespace
@@ -91,14 +76,9 @@ std::string InspectorState::export_stats_json() const { return stats_json(*this)
 
 std::string InspectorState::export_stats_csv() const
 {
-    std::vector<std::pair<std::string, std::string>> fields;
-    flatten(stats_json(*this), "", fields);
-    std::string header, values;
-    for (size_t i = 0; i < fields.size(); ++i) {
-        header += (i ? "," : "") + fields[i].first;
-        values += (i ? "," : "") + fields[i].second;
-    }
-    return header + "\n" + values + "\n";
+    CsvFields fields;
+    flatten_json(stats_json(*this), "", fields);
+    return csv_table({fields});
 }
 
 } // namespace pvs::gui

@@ -1,6 +1,6 @@
-#include "app/zone_report.h"
+#include "report/zone_report.h"
 
-namespace pvs::app {
+namespace pvs {
 
 namespace {
 nlohmann::json vec3_json(const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
@@ -20,6 +20,9 @@ nlohmann::json zone_report_json(const Zone& zone, const ZoneStats& s, double loa
         pvs["mean_visible"] = s.pvs.mean_visible;
         pvs["min_visible"] = s.pvs.min_visible;
         pvs["max_visible"] = s.pvs.max_visible;
+        pvs["p50_visible"] = s.pvs.p50_visible;
+        pvs["p90_visible"] = s.pvs.p90_visible;
+        pvs["p99_visible"] = s.pvs.p99_visible;
         pvs["mean_visible_percent"] = s.pvs.mean_percent;
         pvs["storage"] = s.pvs.dense ? "dense" : "compressed";
         pvs["memory_bytes"] = s.pvs.memory_bytes;
@@ -72,4 +75,4 @@ nlohmann::json zone_report_json(const Zone& zone, const ZoneStats& s, double loa
     return report;
 }
 
-} // namespace pvs::app
+} // namespace pvs

@@ -1,6 +1,6 @@
 // The JSON report of `pvscope info --json`: stable field names with the values of e1m1's
 // known answers (../shared/data/README.md), and a report for an empty zone.
-#include "app/zone_report.h"
+#include "report/zone_report.h"
 #include "tests/support/test_data.h"
 #include "wld/zone_file.h"
 
@@ -13,7 +13,7 @@ TEST(ZoneReport, E1m1ReportCarriesTheKnownAnswers)
 {
     SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
     const Zone zone = load_zone(path);
-    const nlohmann::json report = app::zone_report_json(zone, compute_zone_stats(zone), 1.0);
+    const nlohmann::json report = zone_report_json(zone, compute_zone_stats(zone), 1.0);
     EXPECT_EQ(report["format"], "Quake BSP");
     EXPECT_EQ(report["version"], "29");
     EXPECT_EQ(report["counts"]["regions"], 1206);
@@ -39,7 +39,7 @@ TEST(ZoneReport, EmptyZoneHasNoPvsAndNoBounds)
     zone.tree.root = ~0;
     zone.region_face_offsets = {0};
     const ZoneStats stats = compute_zone_stats(zone);
-    const nlohmann::json report = app::zone_report_json(zone, stats, 0.0);
+    const nlohmann::json report = zone_report_json(zone, stats, 0.0);
     EXPECT_EQ(report["counts"]["regions"], 0);
     EXPECT_EQ(report["counts"]["outside_leaves"], 1);
     EXPECT_FALSE(report["pvs"]["present"]);

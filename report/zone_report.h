@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-namespace pvs::app {
+namespace pvs {
 
 nlohmann::json zone_report_json(const Zone& zone, const ZoneStats& stats, double load_ms);
 
-} // namespace pvs::app
+} // namespace pvs
