@@ -18,6 +18,7 @@
 #include "wld/doom/gl_pvs_writer.h"
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/hepvs/hepvs_zone.h"
+#include "wld/pvs_edit_list.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp29_vis_writer.h"
 #include "wld/quake/prt_file.h"
@@ -294,8 +295,21 @@ void write_doom_output(const BakeOptions& o, const Input& in, const Pvs& pvs, st
                  pvs.region_count(), o.reject ? " and REJECT rebuilt from it" : "");
 }
 
-void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
+// The bake with --apply-edits' list applied (a copy), or the bake itself.
+const Pvs& with_edits(const BakeOptions& o, const Pvs& pvs, Pvs& edited, std::FILE* err)
 {
+    if (o.apply_edits.empty())
+        return pvs;
+    const std::vector<PvsEdit> edits = read_edit_list(o.apply_edits, pvs.row_count(), pvs.region_count());
+    edited = apply_edits(pvs, edits);
+    std::fprintf(err, "applied %zu edits from %s\n", edits.size(), o.apply_edits.c_str());
+    return edited;
+}
+
+void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::FILE* err)
+{
+    Pvs edited;
+    const Pvs& pvs = with_edits(o, baked, edited, err);
     if (in.format == InputFormat::DoomWad) {
         write_doom_output(o, in, pvs, err);
         return;
@@ -638,6 +652,9 @@ void register_bake_command(CLI::App& app, int& exit_code)
                                            "doors and lifts count as built: only for maps whose sectors never move). "
                                            "Default: 2-D, as glVIS");
     cmd->add_flag("--reject", o->reject, "Doom: also rebuild the map's REJECT from the PVS (as glVIS does)");
+    cmd->add_option("--apply-edits", o->apply_edits, "Apply this PVS edit list (saved by the inspector) to the bake "
+                                                     "before writing it: hand fixes that survive a re-vis")
+        ->check(CLI::ExistingFile);
     cmd->add_flag("--in-place", o->in_place, "Doom: write GL_PVS into the map's own GL file (.gwa or WAD), keeping "
                                              "the old one as .~gw / .~wa, as glVIS does");
     cmd->add_option("--method", o->method, "portal-fast (base vis only, loose), portal-full (clipped flow), "

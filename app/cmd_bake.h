@@ -72,6 +72,9 @@ struct BakeOptions {
     bool heights = false;
     bool reject = false;
     bool in_place = false;
+    // A PVS edit list (wld/pvs_edit_list.h) applied to the bake before it is written: hand fixes
+    // that survive a re-vis.
+    std::string apply_edits;
 };
 
 // Runs the bake; messages and progress go to `err`. `cancel`, when given, is polled while the

@@ -15,7 +15,9 @@
 #include "visibility/bit_row.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
+#include "wld/common/read_file.h"
 #include "wld/convert.h"
+#include "wld/pvs_edit_list.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
 
@@ -319,6 +321,49 @@ TEST_F(BakeCommand, ReferenceIsALowerBoundOfPortalFullAndWarns)
 
     reference.prt_in = path("none.prt");
     EXPECT_EQ(run(reference), 2) << "--prt does not apply to the reference";
+}
+
+} // namespace
+} // namespace pvs::test
+
+namespace pvs::test {
+namespace {
+
+// --apply-edits: an edit list (as the inspector saves it) applied to a fresh bake before it is
+// written: the hidden pair is hidden in the file, the forced one visible, the rest the bake's.
+TEST_F(BakeCommand, ApplyEditsAfterTheBake)
+{
+    gen::GenParams generation;
+    generation.rooms = 12;
+    generation.seed = 5;
+    app::BakeOptions o = bake_generated(generation, "plain.s3d");
+    ASSERT_EQ(run(o), 0) << err_;
+    const Zone plain = load_s3d(o.output);
+    ASSERT_TRUE(plain.baked_pvs);
+    const uint32_t n = uint32_t(plain.region_count());
+    uint32_t seen = 1, unseen = 0;
+    while (seen < n && !plain.baked_pvs->visible(0, seen))
+        ++seen;
+    while (unseen < n && plain.baked_pvs->visible(0, unseen))
+        ++unseen;
+    ASSERT_LT(seen, n);
+    ASSERT_LT(unseen, n);
+    const std::string list = path("edits.json");
+    const std::string json = edit_list_json({pair_edit(0, seen, false, false), pair_edit(0, unseen, true, false)}, n, n);
+    write_whole_file(list, std::vector<uint8_t>(json.begin(), json.end()));
+    o.output = path("edited.s3d");
+    o.apply_edits = list;
+    ASSERT_EQ(run(o), 0) << err_;
+    EXPECT_NE(err_.find("applied 2 edits"), std::string::npos) << err_;
+    const Zone edited = load_s3d(o.output);
+    EXPECT_FALSE(edited.baked_pvs->visible(0, seen));
+    EXPECT_TRUE(edited.baked_pvs->visible(0, unseen));
+    size_t other_differences = 0;
+    for (uint32_t r = 0; r < n; ++r)
+        for (uint32_t c = 0; c < n; ++c)
+            if (!(r == 0 && (c == seen || c == unseen)))
+                other_differences += edited.baked_pvs->visible(r, c) != plain.baked_pvs->visible(r, c);
+    EXPECT_EQ(other_differences, 0u);
 }
 
 } // namespace
