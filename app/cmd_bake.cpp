@@ -19,6 +19,7 @@
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/hepvs/hepvs_zone.h"
 #include "wld/pvs_edit_list.h"
+#include "wld/pvs_writeback.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp29_vis_writer.h"
 #include "wld/quake/prt_file.h"
@@ -314,27 +315,11 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::
         write_doom_output(o, in, pvs, err);
         return;
     }
-    if (in.format == InputFormat::ObjHepvs) {
-        Zone zone = in.zone;
-        zone.baked_pvs = pvs;
-        const HepvsFile hepvs = hepvs_from_zone(zone);
-        write_whole_file(o.output, write_hepvs(hepvs));
-        std::fprintf(err, "wrote %s: %u x %u x %u cells, %zu objects\n", o.output.c_str(), hepvs.counts.x,
-                     hepvs.counts.y, hepvs.counts.z, hepvs.names.size());
-        return;
-    }
-    if (in.format == InputFormat::QuakeBsp) {
-        quake::Bsp29VisStats stats;
-        write_whole_file(o.output, quake::write_bsp29_vis(in.bytes, pvs, o.input, &stats));
-        std::fprintf(err, "wrote %s: %u rows, %u distinct, %zu bytes of visdata\n", o.output.c_str(), stats.rows,
-                     stats.unique_rows, stats.visdata_bytes);
-        return;
-    }
-    Zone zone = in.zone; // a copy: the comparison still needs the file's own PVS
-    zone.baked_pvs = pvs;
-    for (const std::string& note : write_zone(zone, o.output, ZoneOutput::S3d))
+    // The other formats through the writer the inspector's Save uses too.
+    const PvsWriteback written = write_pvs_in_zone_format(in.zone, ZoneLoadOptions{}, pvs, o.output);
+    for (const std::string& note : written.notes)
         std::fprintf(err, "note: %s\n", note.c_str());
-    std::fprintf(err, "wrote %s\n", o.output.c_str());
+    std::fprintf(err, "%s\n", written.summary.c_str());
 }
 
 nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun& run, double load_seconds,

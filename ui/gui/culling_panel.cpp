@@ -94,7 +94,7 @@ void draw_switches(InspectorState& state)
         }
     ImGui::TextDisabled("PVS source");
     first = true;
-    for (PvsSource source : {PvsSource::File, PvsSource::None, PvsSource::Baked}) {
+    for (PvsSource source : {PvsSource::File, PvsSource::None, PvsSource::Baked, PvsSource::Edited}) {
         if (!std::exchange(first, false))
             ImGui::SameLine();
         const bool available = state.has_pvs_source(source);

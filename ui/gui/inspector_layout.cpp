@@ -40,6 +40,14 @@ void draw_inspector(InspectorState& state, InspectorPanels& panels, float dt_sec
     draw_zone_panel(state, panels.zone);
     place({0.0f, top + zone_height}, {left, display.y - zone_height}, condition);
     draw_region_panel(state, panels.region);
+    // Undo / redo of PVS edits from anywhere but a text field.
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.KeyCtrl && !io.WantTextInput) {
+        if (ImGui::IsKeyPressed('Z', false))
+            state.undo_pvs_edit();
+        if (ImGui::IsKeyPressed('Y', false))
+            state.redo_pvs_edit();
+    }
     place({display.x - right, top}, {right, culling_height}, condition);
     draw_culling_panel(state, panels.culling);
     place({display.x - right, top + culling_height}, {right, bsp_height}, condition);

@@ -107,6 +107,7 @@ bool InspectorState::open_zone(const std::string& path, const ZoneLoadOptions& l
         const auto start = std::chrono::steady_clock::now();
         auto zone = std::make_unique<Zone>(load_zone(path, load));
         adopt_zone(std::move(zone), ms_since(start));
+        zone_load_ = load;
         return true;
     } catch (const std::exception& e) { // FileError for bad files; bad_alloc and the like too
         error_ = e.what();
@@ -137,6 +138,8 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     zone_stats_ = compute_zone_stats(*zone_);
     build_face_regions(*zone_, face_region_offsets_, face_regions_);
     baked_pvs_.reset();
+    editor_.reset();
+    edited_pvs_.reset();
     baked_report_ = {};
     node_polygons_.reset();
     built_portals_.reset();

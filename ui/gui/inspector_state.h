@@ -32,6 +32,7 @@
 #include "visibility/culler.h"
 #include "visibility/geometry/winding.h"
 #include "visibility/region_lookup.h"
+#include "visibility/pvs_edits.h"
 #include "visibility/zone.h"
 #include "wld/zone_file.h"
 #include "visibility/zone_stats.h"
@@ -70,9 +71,9 @@ struct Selection {
     std::optional<glm::vec3> point;     // where the ray through the picked pixel hits the face
 };
 
-// Where the culler's PVS comes from: the zone file's, none (frustum only), or a bake made in
-// the inspector (BakeJob).
-enum class PvsSource : uint8_t { File, None, Baked };
+// Where the culler's PVS comes from: the zone file's, none (frustum only), a bake made in the
+// inspector (BakeJob), or the hand-edited PVS (edit_pvs).
+enum class PvsSource : uint8_t { File, None, Baked, Edited };
 const char* pvs_source_name(PvsSource source);
 
 inline constexpr float kMinFovDegrees = 20.0f, kMaxFovDegrees = 140.0f;
@@ -191,6 +192,29 @@ public:
     bool start_compare(const ui::CompareOptions& options);
     bool use_compared_pvs(size_t row);
     const std::string& baked_label() const { return baked_label_; }
+
+    // ---- PVS editing (pvs_editing.cpp) --------------------------------------------------------
+    // Hand edits of the PVS with undo/redo (visibility/pvs_edits.h). The first edit copies the
+    // active PVS (file or baked); the culler then uses the edited one (PvsSource::Edited) and
+    // every edit, undo and redo updates it. Opening another zone drops the edits. False (nothing
+    // changes) without a PVS to edit or for an index out of range.
+    bool edit_pvs(const PvsEdit& edit);
+    // Row `row` := that row of `method` (portal-fast, portal-full, reference, ...: baked now
+    // through the registry, milliseconds to seconds), or cleared to the region itself.
+    bool fill_pvs_row(uint32_t row, const std::string& method);
+    bool undo_pvs_edit();
+    bool redo_pvs_edit();
+    const EditablePvs* pvs_editor() const { return editor_ ? &*editor_ : nullptr; }
+    // The edit list (wld/pvs_edit_list.h) as JSON, and loading one (its edits applied in order
+    // on top of the current ones); load returns false with error() set for a bad list.
+    std::string pvs_edit_list_json() const;
+    bool load_pvs_edit_list(const std::string& path);
+    // Pairs the edits hid that `reference` sees (what culling with the edits could pop).
+    size_t pvs_edit_popping_risk(const Pvs& reference) const;
+    // Writes the active PVS (edited or not) into a copy of the zone's file at `out_path`, in its
+    // own format, through the writers `bake` uses (wld/pvs_writeback.h). False with error() set
+    // when it cannot (a generated zone, no PVS, a write error); `message` says what was written.
+    bool save_pvs(const std::string& out_path, std::string& message);
     const VisReport& baked_report() const { return baked_report_; }
 
     // ---- Stability cases (the Stability panel) -----------------------------------------------
@@ -263,6 +287,10 @@ private:
 
     PvsSource pvs_source_ = PvsSource::None;
     std::optional<Pvs> baked_pvs_;
+    std::optional<EditablePvs> editor_;
+    ZoneLoadOptions zone_load_; // how the open zone was read (a Doom map and its GL nodes)
+    std::optional<Pvs> edited_pvs_;
+    void publish_edits(); // edited_pvs_ from editor_, culling with it
     std::string case_name_;                 // the stability case open, if the zone is one
     std::vector<std::string> case_missing_; // its truth's pairs the baked PVS lacks
     std::string baked_label_; // what the "baked" source holds: "portal-full level=4 ...", a compare row

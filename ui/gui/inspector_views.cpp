@@ -20,6 +20,7 @@ const char* pvs_source_name(PvsSource source)
     case PvsSource::File: return "file";
     case PvsSource::None: return "none";
     case PvsSource::Baked: return "baked";
+    case PvsSource::Edited: return "edited";
     }
     return "?";
 }
@@ -124,6 +125,7 @@ bool InspectorState::has_pvs_source(PvsSource source) const
     case PvsSource::File: return zone_ && zone_->baked_pvs;
     case PvsSource::None: return zone_ != nullptr;
     case PvsSource::Baked: return zone_ && baked_pvs_;
+    case PvsSource::Edited: return zone_ && edited_pvs_;
     }
     return false;
 }
@@ -136,6 +138,8 @@ const Pvs* InspectorState::active_pvs() const
         return &*zone_->baked_pvs;
     if (pvs_source_ == PvsSource::Baked && baked_pvs_)
         return &*baked_pvs_;
+    if (pvs_source_ == PvsSource::Edited && edited_pvs_)
+        return &*edited_pvs_;
     return nullptr;
 }
 

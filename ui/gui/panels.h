@@ -64,6 +64,11 @@ struct RegionPanel {
     std::vector<uint32_t> row;     // regions it sees, ascending
     std::vector<uint32_t> column;  // regions that see it, ascending
     std::vector<uint32_t> neighbours; // regions sharing a portal with it
+    // PVS editing: pairs both ways, where the edit list is saved, and the last save's message.
+    bool edit_both_ways = true;
+    char edit_list_path[256] = "pvs-edits.json";
+    char save_path[256] = "";
+    std::string edit_message;
 };
 void draw_region_panel(InspectorState& state, RegionPanel& panel);
 

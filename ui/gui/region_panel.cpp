@@ -1,11 +1,18 @@
 // The region panel: the picked region (or the camera's), its bounds, flags, faces, and three
 // clickable lists: its PVS row (the regions it sees), its column ("visible from": the regions
 // that see it), both from the culler's current PVS source, and its neighbours through portals.
-// Clicking an entry selects that region and moves the camera into it.
+// Clicking an entry selects that region and moves the camera into it. Below them, PVS editing:
+// the pair (camera's region, this region) shown or hidden, this region's row cleared or filled
+// from portal-fast or the reference, undo/redo (also Ctrl-Z / Ctrl-Y anywhere), the edit count
+// and its popping risk against a reference the Compare panel baked, and the edit list saved
+// (re-applied after a re-bake with `pvscope bake --apply-edits`). Edited entries are marked *.
 #include "ui/gui/panels.h"
 
 #include "ui/gui/pvs_rows.h"
 
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace pvs::gui {
@@ -44,8 +51,11 @@ std::string flag_names(uint32_t flags)
     return names.empty() ? "none" : names;
 }
 
-// A clipped list of region ids; a click selects the region and goes there.
-void draw_region_list(InspectorState& state, const char* id, const std::vector<uint32_t>& regions, float height)
+// A clipped list of region ids; a click selects the region and goes there. `edited(r)` marks
+// the entries whose bit an edit set.
+template <class Edited>
+void draw_region_list(InspectorState& state, const char* id, const std::vector<uint32_t>& regions, float height,
+                      Edited&& edited)
 {
     if (!ImGui::BeginChild(id, {0.0f, height}, true)) {
         ImGui::EndChild();
@@ -56,7 +66,7 @@ void draw_region_list(InspectorState& state, const char* id, const std::vector<u
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const uint32_t r = regions[size_t(i)];
-            const std::string label = "region " + std::to_string(r) + "##" + id;
+            const std::string label = "region " + std::to_string(r) + (edited(r) ? " *" : "") + "##" + id;
             if (ImGui::Selectable(label.c_str(), int32_t(r) == state.selection().region)) {
                 state.select_region(int32_t(r));
                 state.go_to_region(r);
@@ -73,9 +83,13 @@ void draw_lists(InspectorState& state, RegionPanel& panel)
     } else {
         ImGui::Text("sees %zu (PVS row, %s)%s", panel.row.size(), pvs_source_name(state.pvs_source()),
                     panel.row_missing ? ": row missing, all visible" : "");
-        draw_region_list(state, "row", panel.row, list_height);
+        const EditablePvs* editor = state.pvs_source() == PvsSource::Edited ? state.pvs_editor() : nullptr;
+        const uint32_t region = uint32_t(panel.lists_region);
+        draw_region_list(state, "row", panel.row, list_height,
+                         [&](uint32_t r) { return editor && editor->edited(region, r); });
         ImGui::Text("visible from %zu (PVS column)", panel.column.size());
-        draw_region_list(state, "column", panel.column, list_height);
+        draw_region_list(state, "column", panel.column, list_height,
+                         [&](uint32_t r) { return editor && editor->edited(r, region); });
     }
     if (!panel.lists_neighbours) {
         ImGui::TextDisabled("neighbours through portals:");
@@ -85,7 +99,93 @@ void draw_lists(InspectorState& state, RegionPanel& panel)
         return;
     }
     ImGui::Text("%zu neighbours through portals", panel.neighbours.size());
-    draw_region_list(state, "neighbours", panel.neighbours, list_height);
+    draw_region_list(state, "neighbours", panel.neighbours, list_height, [](uint32_t) { return false; });
+}
+
+// The popping risk of the edits against the Compare panel's reference, when it has one.
+void draw_edit_risk(const InspectorState& state)
+{
+    const std::optional<ui::CompareResult>& result = state.compare_job().result();
+    if (!result)
+        return;
+    for (const ui::CompareRow& row : result->rows)
+        if (row.method == "reference" && row.pvs) {
+            ImGui::SameLine();
+            ImGui::Text("| popping risk %zu pairs (vs the reference)", state.pvs_edit_popping_risk(*row.pvs));
+            return;
+        }
+}
+
+void draw_editing(InspectorState& state, RegionPanel& panel, int32_t region)
+{
+    if (!ImGui::CollapsingHeader("Edit PVS"))
+        return;
+    const int32_t camera = state.last_cull().region;
+    const Pvs* pvs = state.active_pvs();
+    if (!pvs && !state.pvs_editor()) {
+        ImGui::TextDisabled("choose a PVS source to edit (file or baked)");
+        return;
+    }
+    if (camera >= 0 && pvs && uint32_t(camera) < pvs->row_count()) {
+        const bool sees = pvs->visible(uint32_t(camera), uint32_t(region));
+        ImGui::Text("camera's region %d %s region %d", camera, sees ? "sees" : "does not see", region);
+        if (ImGui::SmallButton(sees ? "Hide" : "Show"))
+            state.edit_pvs(pair_edit(uint32_t(camera), uint32_t(region), !sees, panel.edit_both_ways));
+        ImGui::SameLine();
+        ImGui::Checkbox("both ways", &panel.edit_both_ways);
+    }
+    ImGui::Text("row of region %d:", region);
+    for (const char* method : {"cleared", "portal-fast", "reference"}) {
+        ImGui::SameLine();
+        const std::string label = std::string(method == std::string("cleared") ? "clear" : method) + "##fill";
+        if (ImGui::SmallButton(label.c_str()))
+            state.fill_pvs_row(uint32_t(region), method);
+    }
+    const EditablePvs* editor = state.pvs_editor();
+    const bool can_undo = editor && editor->can_undo(), can_redo = editor && editor->can_redo();
+    if (!can_undo)
+        ImGui::BeginDisabled();
+    if (ImGui::SmallButton("Undo"))
+        state.undo_pvs_edit();
+    if (!can_undo)
+        ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (!can_redo)
+        ImGui::BeginDisabled();
+    if (ImGui::SmallButton("Redo"))
+        state.redo_pvs_edit();
+    if (!can_redo)
+        ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::Text("%zu edits", editor ? editor->edit_count() : size_t(0));
+    draw_edit_risk(state);
+    ImGui::InputText("##editlist", panel.edit_list_path, sizeof panel.edit_list_path);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Save list") && editor) {
+        std::ofstream out(panel.edit_list_path);
+        out << state.pvs_edit_list_json();
+        panel.edit_message = out ? std::string("saved ") + panel.edit_list_path : "could not write the file";
+    }
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Load"))
+        panel.edit_message = state.load_pvs_edit_list(panel.edit_list_path) ? "applied " + std::string(panel.edit_list_path)
+                                                                             : state.error();
+    if (panel.save_path[0] == 0 && !state.zone().source.path.empty()) {
+        const std::filesystem::path source(state.zone().source.path);
+        const std::string name = source.stem().string() + "-edited" +
+                                 (state.zone().view_grid ? std::string(".hepvs") : source.extension().string());
+        std::snprintf(panel.save_path, sizeof panel.save_path, "%s", name.c_str());
+    }
+    ImGui::InputText("##savepvs", panel.save_path, sizeof panel.save_path);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Save PVS")) {
+        std::string message;
+        panel.edit_message = state.save_pvs(panel.save_path, message) ? message : state.error();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A copy of the zone file with this PVS, in its own format (as pvscope bake -o writes it)");
+    if (!panel.edit_message.empty())
+        ImGui::TextWrapped("%s", panel.edit_message.c_str());
 }
 
 } // namespace
@@ -126,6 +226,7 @@ void draw_region_panel(InspectorState& state, RegionPanel& panel)
     ImGui::Text("%zu faces, %llu triangles", zone.faces_of_region(uint32_t(region)).size(),
                 static_cast<unsigned long long>(state.region_triangles(uint32_t(region))));
     update_lists(state, region, panel);
+    draw_editing(state, panel, region);
     draw_lists(state, panel);
     ImGui::End();
 }

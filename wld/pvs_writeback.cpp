@@ -1,0 +1,83 @@
+#include "wld/pvs_writeback.h"
+
+#include "visibility/file_error.h"
+#include "wld/common/read_file.h"
+#include "wld/convert.h"
+#include "wld/doom/doom_map.h"
+#include "wld/doom/gl_pvs_writer.h"
+#include "wld/doom/wad_file.h"
+#include "wld/eq/eq_zone_reader.h"
+#include "wld/hepvs/hepvs_file.h"
+#include "wld/hepvs/hepvs_zone.h"
+#include "wld/obj/obj_reader.h"
+#include "wld/quake/bsp29_reader.h"
+#include "wld/quake/bsp29_vis_writer.h"
+
+#include <filesystem>
+
+namespace pvs {
+
+namespace {
+
+PvsWriteback write_hepvs_of(const Zone& zone, const Pvs& pvs, const std::string& out_path)
+{
+    Zone copy = zone;
+    copy.baked_pvs = pvs;
+    const HepvsFile hepvs = hepvs_from_zone(copy);
+    write_whole_file(out_path, write_hepvs(hepvs));
+    return {"wrote " + out_path + ": " + std::to_string(hepvs.counts.x) + " x " + std::to_string(hepvs.counts.y) +
+                " x " + std::to_string(hepvs.counts.z) + " cells, " + std::to_string(hepvs.names.size()) + " objects",
+            {}};
+}
+
+PvsWriteback write_gl_pvs_of(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs, const std::string& out_path)
+{
+    const std::string& path = zone.source.path;
+    const doom::WadFile wad = doom::read_wad(path);
+    const std::string gwa_path = load.gwa.empty() ? doom::gwa_path_for(path) : load.gwa;
+    std::optional<doom::WadFile> gwa;
+    std::error_code ec;
+    if (std::filesystem::exists(gwa_path, ec) && gwa_path != path)
+        gwa = doom::read_wad(gwa_path);
+    const doom::DoomMap map = doom::read_doom_map(wad, gwa ? &*gwa : nullptr, load.map);
+    const doom::WadFile gl = doom::read_wad(map.source.gl_path);
+    write_whole_file(out_path, doom::with_gl_pvs(gl, map.source.gl_marker, doom::gl_pvs_lump(pvs)));
+    return {"wrote " + out_path + ": " + map.source.gl_path + " with GL_PVS (" + std::to_string(pvs.region_count()) +
+                " subsectors)",
+            {}};
+}
+
+} // namespace
+
+PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,
+                                      const std::string& out_path)
+{
+    const std::string& path = zone.source.path;
+    std::error_code ec;
+    if (path.empty() || !std::filesystem::is_regular_file(path, ec))
+        throw FileError(path.empty() ? out_path : path, 0,
+                        "this zone was not read from a file (a generated zone): there is nothing to write the PVS into");
+    if (zone.view_grid)
+        return write_hepvs_of(zone, pvs, out_path);
+    const std::vector<uint8_t> bytes = read_whole_file(path);
+    if (quake::looks_like_bsp29(bytes)) {
+        quake::Bsp29VisStats stats;
+        write_whole_file(out_path, quake::write_bsp29_vis(bytes, pvs, path, &stats));
+        return {"wrote " + out_path + ": " + std::to_string(stats.rows) + " rows, " + std::to_string(stats.unique_rows) +
+                    " distinct, " + std::to_string(stats.visdata_bytes) + " bytes of visdata",
+                {}};
+    }
+    if (doom::looks_like_wad(bytes))
+        return write_gl_pvs_of(zone, load, pvs, out_path);
+    if (eq::looks_like_pfs(bytes)) {
+        Zone copy = zone;
+        copy.baked_pvs = pvs;
+        PvsWriteback out;
+        out.notes = write_zone(copy, out_path, ZoneOutput::S3d);
+        out.summary = "wrote " + out_path;
+        return out;
+    }
+    throw FileError(path, 0, "cannot write a PVS back into this format");
+}
+
+} // namespace pvs
