@@ -31,7 +31,7 @@ struct InspectOptions {
     std::string stability_case;
 };
 
-// "membership,planes,portals,bounds,zonelines,frustum,cell" (any subset, or "none") -> the toggles.
+// "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell" (any subset, or "none") -> the toggles.
 std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
 {
     ui::OverlaySettings o;
@@ -43,6 +43,8 @@ std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
     while (std::getline(list, name, ',')) {
         if (name == "membership")
             o.pvs_membership = true;
+        else if (name == "membership-boxes")
+            o.pvs_membership_boxes = true;
         else if (name == "planes")
             o.split_planes = true;
         else if (name == "portals")
@@ -94,13 +96,13 @@ void register_inspect_command(CLI::App& app, int& exit_code)
     cmd->add_flag("--report-fps", o->report_fps,
                   "Draw --frames frames without vsync, print the frame times (mean, median, p95, fps) and exit");
     cmd->add_option("--overlays", o->overlays,
-                    "Overlays at start: a comma list of membership, planes, portals, bounds, zonelines, frustum, cell; "
+                    "Overlays at start: a comma list of membership (tinted faces), membership-boxes, planes, portals, bounds, zonelines, frustum, cell; "
                     "or none")
         ->capture_default_str()
         ->check(CLI::Validator(
             [](std::string& text) {
                 return parse_overlays(text) ? std::string()
-                                            : "expects a comma list of membership, planes, portals, bounds, "
+                                            : "expects a comma list of membership, membership-boxes, planes, portals, bounds, "
                                               "zonelines, frustum (or none), got '" + text + "'";
             },
             "LIST"));

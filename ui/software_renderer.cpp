@@ -228,7 +228,7 @@ const RenderStats& SoftwareRenderer::last_stats() const { return impl_->stats; }
 void SoftwareRenderer::forget_zone() { impl_->scene.reset(); }
 
 Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std::vector<uint32_t>& visible_regions,
-                               RenderMode mode)
+                               RenderMode mode, std::span<const uint32_t> region_tints)
 {
     Impl& s = *impl_;
     if (mode == RenderMode::IdBuffer && zone.mesh.faces.size() > kMaxIdFaces)
@@ -266,7 +266,7 @@ Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std
     s.driver->setTransform(irr::video::ETS_PROJECTION, projection);
     s.driver->setTransform(irr::video::ETS_VIEW, view);
     s.driver->setTransform(irr::video::ETS_WORLD, irr::core::IdentityMatrix);
-    const ZoneScene::DrawStats drawn = s.scene->draw(visible_regions, mode);
+    const ZoneScene::DrawStats drawn = s.scene->draw(visible_regions, mode, region_tints);
     s.driver->setRenderTarget(nullptr, false, false);
 
     Image image;

@@ -41,6 +41,7 @@
 #include "visibility/zone.h"
 
 #include <array>
+#include <span>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -124,6 +125,18 @@ inline constexpr std::array<FlagTint, kRegionFlagCount> kFlagTints{{
 inline constexpr uint32_t kFlagTintAlpha = 128;
 inline constexpr uint32_t kNoTint = 0xFFFFFFFFu;
 
+// The PVS membership tints (the inspector's membership overlay: a region's part in this frame's
+// culling, ui/zone_overlays.h Membership order): the culling camera's region, drawn, culled by the
+// frustum, culled by the PVS. They follow the flag tints in one palette of tint indices.
+inline constexpr std::array<uint32_t, 4> kMembershipTints{0xFFFFFF, 0x40E040, 0xFFA020, 0xE03030};
+inline constexpr uint32_t kMembershipTintBase = uint32_t(kFlagTints.size());
+inline constexpr uint32_t kTintPaletteSize = kMembershipTintBase + uint32_t(kMembershipTints.size());
+// 0xRRGGBB of palette index `tint` (< kTintPaletteSize).
+constexpr uint32_t tint_palette_rgb(uint32_t tint)
+{
+    return tint < kMembershipTintBase ? kFlagTints[tint].rgb : kMembershipTints[tint - kMembershipTintBase];
+}
+
 // Index into kFlagTints of the tint for a region with these RegionFlag bits, or kNoTint.
 constexpr uint32_t flag_tint_index(uint32_t region_flags)
 {
@@ -170,9 +183,11 @@ public:
     // pass width/height for an undistorted picture. The scene built from `zone` (textures,
     // vertices) is kept while the same Zone object with the same buffers is passed again; call
     // forget_zone() after changing a zone in place. Throws std::runtime_error in IdBuffer mode
-    // for a zone of more than kMaxIdFaces faces.
+    // for a zone of more than kMaxIdFaces faces. `region_tints`, when not empty (one palette
+    // index or kNoTint per region of the zone), tints each region's faces as Flags mode tints
+    // them, in place of the mode's own tints (Textured and Flags modes).
     Image render(const Zone& zone, const Camera& camera, const std::vector<uint32_t>& visible_regions,
-                 RenderMode mode);
+                 RenderMode mode, std::span<const uint32_t> region_tints = {});
     void forget_zone();
     const RenderStats& last_stats() const;
 

@@ -98,6 +98,14 @@ Membership classify_region(uint32_t region, int32_t current, std::span<const uin
     return contains(after_pvs, region) ? Membership::CulledByFrustum : Membership::CulledByPvs;
 }
 
+void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
+                      std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out)
+{
+    out.resize(zone.region_count());
+    for (uint32_t r = 0; r < out.size(); ++r)
+        out[r] = kMembershipTintBase + uint32_t(classify_region(r, current, visible, after_pvs));
+}
+
 uint32_t membership_color(Membership membership)
 {
     switch (membership) {
@@ -129,7 +137,7 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
     const LineProjection lines(scene.view); // the camera's matrices, once for every line
     if (settings.split_planes)
         paint_split_planes(image, scene, lines);
-    if (settings.pvs_membership)
+    if (settings.pvs_membership_boxes)
         paint_membership(image, scene, lines);
     if (settings.region_bounds)
         for (uint32_t r : scene.visible)
@@ -152,7 +160,7 @@ std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool gr
         legend.push_back({"split plane on camera path", kSplitPlaneColor});
         legend.push_back({"current / selected split plane", kCurrentSplitPlaneColor});
     }
-    if (settings.pvs_membership)
+    if (settings.pvs_membership || settings.pvs_membership_boxes)
         for (Membership m : {Membership::Current, Membership::Drawn, Membership::CulledByFrustum,
                              Membership::CulledByPvs})
             legend.push_back({membership_name(m), membership_color(m)});

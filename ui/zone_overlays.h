@@ -1,9 +1,10 @@
 // The inspector's overlays, drawn over a rendered picture on the CPU (ui/overlay_fill.h,
 // ui/overlay_lines.h), each behind its own toggle, and the legend that names their colours:
-//  - PVS membership: every region's bounds box in the colour of its class for this frame
-//    (classify_region): the culling camera's region, drawn, culled by the frustum (in the PVS
-//    but outside the view volume), culled by the PVS. Wireframe, so culled regions, which have
-//    no pixels in the picture, still show where they are.
+//  - PVS membership: the class of each region this frame (classify_region: the culling camera's
+//    region, drawn, culled by the frustum — in the PVS but outside the view volume —, culled by
+//    the PVS) as a tint of its faces: the caller renders every region with membership_tints
+//    (depth-correct: a PVS-culled wall shows red only where it is really in sight). With
+//    pvs_membership_boxes, each region's bounds box in its class colour too (wireframe, on top).
 //  - BSP split planes: the plane of every node on the path from the root to the culling
 //    camera's leaf, as a translucent polygon clipped to its node's cell (node_plane_polygons,
 //    visibility/geometry/bsp_volume.h), the highlighted node (the BSP panel's selection, else
@@ -35,7 +36,10 @@
 namespace pvs::ui {
 
 struct OverlaySettings {
+    // PVS membership as a tint of the faces themselves (depth-correct: every region is drawn,
+    // tinted by its Membership); the boxes of the first version are an option of their own.
     bool pvs_membership = false;
+    bool pvs_membership_boxes = false;
     bool split_planes = false;
     bool portals = false;
     bool region_bounds = false;
@@ -52,10 +56,10 @@ Membership classify_region(uint32_t region, int32_t current, std::span<const uin
                            std::span<const uint32_t> after_pvs);
 
 // Colours (0xRRGGBB) and fill weights (out of 256).
-inline constexpr uint32_t kCurrentRegionColor = 0xFFFFFF;
-inline constexpr uint32_t kDrawnRegionColor = 0x40E040;
-inline constexpr uint32_t kFrustumCulledColor = 0xFFA020;
-inline constexpr uint32_t kPvsCulledColor = 0xE03030;
+inline constexpr uint32_t kCurrentRegionColor = kMembershipTints[0]; // the same colours tint the faces
+inline constexpr uint32_t kDrawnRegionColor = kMembershipTints[1];
+inline constexpr uint32_t kFrustumCulledColor = kMembershipTints[2];
+inline constexpr uint32_t kPvsCulledColor = kMembershipTints[3];
 inline constexpr uint32_t kSplitPlaneColor = 0x30C0FF;
 inline constexpr uint32_t kCurrentSplitPlaneColor = 0xFFE040;
 inline constexpr uint32_t kPortalColor = 0x00FFC0;
@@ -65,6 +69,9 @@ inline constexpr uint32_t kSplitPlaneAlpha = 24; // a dozen planes overlap: keep
 inline constexpr uint32_t kCurrentSplitPlaneAlpha = 90;
 
 uint32_t membership_color(Membership membership);
+// One tint palette index (kMembershipTintBase + class) per region of `zone`, into `out`.
+void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
+                      std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out);
 const char* membership_name(Membership membership);
 
 // One frame's inputs. Spans and pointers are borrowed for the call; null / empty = not available

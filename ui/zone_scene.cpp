@@ -109,7 +109,7 @@ bool ZoneScene::built_from(const Zone& zone) const
 void ZoneScene::upload_textures()
 {
     textures_.assign(zone_->materials.size(), nullptr);
-    tinted_textures_.assign(zone_->materials.size() * kFlagTints.size(), nullptr);
+    tinted_textures_.assign(zone_->materials.size() * kTintPaletteSize, nullptr);
     tinted_made_.assign(tinted_textures_.size(), 0);
     for (size_t m = 0; m < zone_->materials.size(); ++m) {
         // Unique within the driver: several scenes (zones) may share one driver over time.
@@ -121,15 +121,15 @@ void ZoneScene::upload_textures()
 
 irr::video::ITexture* ZoneScene::tinted_texture(uint32_t material, uint32_t tint)
 {
-    if (material >= zone_->materials.size() || tint >= kFlagTints.size())
+    if (material >= zone_->materials.size() || tint >= kTintPaletteSize)
         return nullptr;
-    const size_t slot = size_t(material) * kFlagTints.size() + tint;
+    const size_t slot = size_t(material) * kTintPaletteSize + tint;
     if (!tinted_made_[slot]) {
         tinted_made_[slot] = 1;
         const std::string name = "pvscope/" + std::to_string(reinterpret_cast<uintptr_t>(this)) + "/" +
                                  std::to_string(material) + "/tint" + std::to_string(tint) + "/" +
                                  zone_->materials[material].name;
-        const uint32_t tint_rgb = kFlagTints[tint].rgb;
+        const uint32_t tint_rgb = tint_palette_rgb(tint);
         tinted_textures_[slot] = make_texture(*driver_, zone_->materials[material], name,
                                               [tint_rgb](uint32_t rgb) { return blend_tint(rgb, tint_rgb); });
     }
@@ -237,7 +237,8 @@ uint32_t ZoneScene::next_stamp()
     return stamp_;
 }
 
-ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_regions, RenderMode mode)
+ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_regions, RenderMode mode,
+                                     std::span<const uint32_t> region_tints)
 {
     DrawStats stats;
     const uint32_t stamp = next_stamp();
@@ -247,7 +248,11 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
         if (region >= region_count)
             continue;
         const SColor region_colour(0xFF000000u | region_color(region));
-        const uint32_t tint = mode == RenderMode::Flags ? flag_tint_index(zone_->regions[region].flags) : kNoTint;
+        const bool tints_given = region < region_tints.size() && mode != RenderMode::RegionColors &&
+                                 mode != RenderMode::IdBuffer;
+        const uint32_t tint = tints_given                  ? region_tints[region]
+                              : mode == RenderMode::Flags ? flag_tint_index(zone_->regions[region].flags)
+                                                          : kNoTint;
         for (uint32_t f : zone_->faces_of_region(region)) {
             if (f >= faces_.size() || face_stamp_[f] == stamp)
                 continue;
@@ -265,7 +270,7 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
             else if (tint != kNoTint) {
                 list = 1 + tint;
                 if (!batch.texture) { // no pixels to tint: tint the flat colour before the light
-                    const uint32_t tinted = blend_tint(slot.base_color.color & 0xFFFFFFu, kFlagTints[tint].rgb);
+                    const uint32_t tinted = blend_tint(slot.base_color.color & 0xFFFFFFu, tint_palette_rgb(tint));
                     colour = scaled(SColor(0xFF000000u | tinted), slot.light);
                 }
             }

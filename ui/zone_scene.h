@@ -44,6 +44,7 @@
 #include <vector3d.h>
 
 #include <array>
+#include <span>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -76,7 +77,9 @@ public:
     // Draws the faces of `visible_regions` (ids >= region count are ignored) with the driver's
     // current render target and transforms (world = identity). In IdBuffer mode the zone must
     // have at most kMaxIdFaces faces (the caller checks).
-    DrawStats draw(const std::vector<uint32_t>& visible_regions, RenderMode mode);
+    // region_tints: one tint palette index (or kNoTint) per region, replacing Flags mode's.
+    DrawStats draw(const std::vector<uint32_t>& visible_regions, RenderMode mode,
+                   std::span<const uint32_t> region_tints = {});
 
     uint32_t skipped_faces() const { return skipped_faces_; }
     uint32_t batch_count() const { return uint32_t(batches_.size()); }
@@ -92,7 +95,7 @@ private:
         irr::video::SColor textured_color;           // base_color x light
     };
     // Frame lists per batch: [0] untinted, [1 + i] tinted with kFlagTints[i].
-    static constexpr size_t kTintSlots = kFlagTints.size() + 1;
+    static constexpr size_t kTintSlots = kTintPaletteSize + 1;
     struct Batch {
         uint32_t material = 0;
         irr::video::ITexture* texture = nullptr; // null: the material has no pixels

@@ -146,3 +146,24 @@ TEST(EditingOnE1m1, AZoneWithoutAFileCannotBeSaved)
 
 } // namespace
 } // namespace pvs::gui
+
+namespace pvs::gui {
+namespace {
+
+// The membership overlay renders every region (the depth test decides what shows) and tints
+// them; without it only the culled set is drawn.
+TEST(MembershipTint, DrawsEveryRegionTinted)
+{
+    InspectorState state;
+    state.set_viewport_size(160, 120);
+    state.open_demo();
+    state.frame();
+    const uint32_t culled_faces = state.last_render().faces_drawn;
+    state.overlays.pvs_membership = true;
+    state.frame();
+    EXPECT_GT(state.last_render().faces_drawn, culled_faces);
+    EXPECT_EQ(state.after_pvs_regions().empty(), false) << "the PVS stage's set is computed for the classes";
+}
+
+} // namespace
+} // namespace pvs::gui

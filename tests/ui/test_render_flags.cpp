@@ -541,5 +541,33 @@ TEST_F(FlagsE1m1, LockedCullingGivesTheLockedCamerasVisibleSetAndStats)
     EXPECT_EQ(ids.image.rgba, renderer.render(*zone_, b, visible_a, RenderMode::IdBuffer).rgba);
 }
 
+// Region tints (the PVS membership overlay): given tints replace the flags' in Textured and
+// Flags modes — a PVS-culled (red) region is redder, a drawn (green) one greener, a region with
+// kNoTint exactly the Textured pixels even where its flags would tint it — and are ignored in
+// RegionColors and IdBuffer modes.
+TEST_F(FlagsOnAWall, RegionTintsReplaceTheFlagTints)
+{
+    const std::vector<uint32_t> tints = {ui::kMembershipTintBase + 3, ui::kMembershipTintBase + 1, ui::kNoTint};
+    const Image tinted = renderer_.render(zone_, wall_camera(), {0, 1, 2}, RenderMode::Textured, tints);
+    for (const auto& [x, y] : interior_[1]) { // region 0 (no flags), culled by the PVS: red
+        const Rgb t = rgb_of(textured_, x, y), m = rgb_of(tinted, x, y);
+        ASSERT_GT(m.r, t.r) << x << "," << y;
+        ASSERT_LT(m.b, t.b) << x << "," << y;
+    }
+    for (const auto& [x, y] : interior_[3]) { // region 1 (water), drawn: green, not blue
+        const Rgb t = rgb_of(textured_, x, y), m = rgb_of(tinted, x, y);
+        ASSERT_GT(m.g, t.g) << x << "," << y;
+        ASSERT_LT(m.b, rgb_of(flags_, x, y).b) << x << "," << y;
+    }
+    for (uint32_t face : {4u, 5u}) // region 2 (water + zone line) with kNoTint: untinted
+        for (const auto& [x, y] : interior_[face])
+            ASSERT_TRUE(same_pixel(tinted, textured_, x, y)) << face << " at " << x << "," << y;
+    const Image regions = renderer_.render(zone_, wall_camera(), {0, 1, 2}, RenderMode::RegionColors);
+    const Image regions_tinted = renderer_.render(zone_, wall_camera(), {0, 1, 2}, RenderMode::RegionColors, tints);
+    EXPECT_EQ(regions.rgba, regions_tinted.rgba);
+    const Image ids_tinted = renderer_.render(zone_, wall_camera(), {0, 1, 2}, RenderMode::IdBuffer, tints);
+    EXPECT_EQ(ids_.rgba, ids_tinted.rgba);
+}
+
 } // namespace
 } // namespace pvs

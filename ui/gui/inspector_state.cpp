@@ -274,7 +274,17 @@ const CullStats& InspectorState::frame()
     update_after_pvs();
     try {
         ensure_renderer();
-        image_ = renderer_->render(*zone_, view_, visible_, render_mode);
+        if (overlays.pvs_membership && render_mode != ui::RenderMode::IdBuffer) {
+            // Every region, tinted by its part in this frame's culling: the depth test decides
+            // which of them show, so a red (PVS-culled) face in sight is a region the PVS drops.
+            all_regions_.resize(zone_->region_count());
+            for (uint32_t r = 0; r < all_regions_.size(); ++r)
+                all_regions_[r] = r;
+            ui::membership_tints(*zone_, last_cull_.region, visible_, after_pvs_, region_tints_);
+            image_ = renderer_->render(*zone_, view_, all_regions_, render_mode, region_tints_);
+        } else {
+            image_ = renderer_->render(*zone_, view_, visible_, render_mode);
+        }
         last_render_ = renderer_->last_stats();
         paint_overlays();
     } catch (const std::exception& e) { // no renderer, or an ID render of a zone too large to encode

@@ -279,6 +279,7 @@ private:
     std::optional<glm::vec3> orbit_target_;
 
     std::vector<uint32_t> after_pvs_;
+    std::vector<uint32_t> all_regions_, region_tints_; // the membership tint's frame lists
     std::vector<ui::OverlayLabel> labels_;
     std::vector<PathStep> path_;
     std::vector<uint32_t> path_nodes_;

@@ -85,7 +85,7 @@ void InspectorState::update_after_pvs()
     path_nodes_.clear();
     for (const PathStep& step : path_)
         path_nodes_.push_back(step.node);
-    if (!overlays.pvs_membership) {
+    if (!overlays.pvs_membership && !overlays.pvs_membership_boxes) {
         after_pvs_.clear();
         return;
     }

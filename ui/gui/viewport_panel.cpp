@@ -54,7 +54,8 @@ void draw_overlay_menu(InspectorState& state)
         return;
     if (ImGui::BeginMenu("Overlays")) {
         ui::OverlaySettings& o = state.overlays;
-        ImGui::MenuItem("PVS membership (region boxes)", nullptr, &o.pvs_membership);
+        ImGui::MenuItem("PVS membership (tinted faces)", nullptr, &o.pvs_membership);
+        ImGui::MenuItem("PVS membership boxes", nullptr, &o.pvs_membership_boxes);
         ImGui::MenuItem("BSP split planes on the camera path", nullptr, &o.split_planes);
         ImGui::MenuItem("Portals", nullptr, &o.portals);
         ImGui::MenuItem("Region bounds", nullptr, &o.region_bounds);
