@@ -103,13 +103,6 @@ bool uses_registry(const BakeOptions& o)
     return o.method == "clustered" || o.method == "reference" || o.method == "raster";
 }
 
-bool is_wad(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    return in.read(magic, 4) && (std::string(magic, 4) == "IWAD" || std::string(magic, 4) == "PWAD");
-}
-
 // The argument errors, each a sentence; empty when the options are usable.
 std::string check_options(const BakeOptions& o)
 {
@@ -165,15 +158,7 @@ Input load_obj_input(const BakeOptions& o)
 // A Doom map: its zone (no textures: nothing is drawn) and where its GL group is.
 Input load_doom_input(const BakeOptions& o)
 {
-    const bool gwa_given = lowercase_extension(o.input) == ".gwa";
-    const std::string wad_path = gwa_given ? std::filesystem::path(o.input).replace_extension(".wad").string() : o.input;
-    const std::string gwa_path = gwa_given ? o.input : o.gwa.empty() ? doom::gwa_path_for(o.input) : o.gwa;
-    const doom::WadFile wad = doom::read_wad(wad_path);
-    std::optional<doom::WadFile> gwa;
-    std::error_code ec;
-    if (std::filesystem::exists(gwa_path, ec) && gwa_path != wad_path)
-        gwa = doom::read_wad(gwa_path);
-    const doom::DoomMap map = doom::read_doom_map(wad, gwa ? &*gwa : nullptr, o.map);
+    const doom::DoomMap map = doom::open_doom_map(o.input, o.map, o.gwa).map;
     Input in(InputFormat::DoomWad, {}, doom::build_doom_zone(map, nullptr));
     in.doom_source = map.source;
     for (const doom::GlSubsector& ss : map.subsectors)
@@ -197,7 +182,7 @@ Input load_input(const BakeOptions& o)
     const std::string ext = lowercase_extension(path);
     if (ext == ".obj" || ext == ".hepvs")
         return load_obj_input(o);
-    if (is_wad(path) || ext == ".gwa")
+    if (doom::file_looks_like_wad(path) || ext == ".gwa")
         return load_doom_input(o);
     Input in(InputFormat::QuakeBsp, read_whole_file(path), {});
     if (quake::looks_like_bsp29(in.bytes)) {

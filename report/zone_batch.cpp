@@ -29,20 +29,9 @@ bool is_zone_file(const fs::path& path)
     return e == ".bsp" || e == ".s3d" || e == ".wad" || e == ".obj";
 }
 
-bool starts_like_wad(const std::string& path)
-{
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f)
-        return false;
-    char magic[4] = {};
-    const bool read = std::fread(magic, 1, 4, f) == 4;
-    std::fclose(f);
-    return read && (std::string(magic, 4) == "IWAD" || std::string(magic, 4) == "PWAD");
-}
-
 void add_file(const std::string& path, std::vector<BatchItem>& items)
 {
-    if (!starts_like_wad(path)) {
+    if (!doom::file_looks_like_wad(path)) {
         items.push_back({path, {}, {}});
         return;
     }

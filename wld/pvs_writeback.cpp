@@ -32,14 +32,7 @@ PvsWriteback write_hepvs_of(const Zone& zone, const Pvs& pvs, const std::string&
 
 PvsWriteback write_gl_pvs_of(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs, const std::string& out_path)
 {
-    const std::string& path = zone.source.path;
-    const doom::WadFile wad = doom::read_wad(path);
-    const std::string gwa_path = load.gwa.empty() ? doom::gwa_path_for(path) : load.gwa;
-    std::optional<doom::WadFile> gwa;
-    std::error_code ec;
-    if (std::filesystem::exists(gwa_path, ec) && gwa_path != path)
-        gwa = doom::read_wad(gwa_path);
-    const doom::DoomMap map = doom::read_doom_map(wad, gwa ? &*gwa : nullptr, load.map);
+    const doom::DoomMap map = doom::open_doom_map(zone.source.path, load.map, load.gwa).map;
     const doom::WadFile gl = doom::read_wad(map.source.gl_path);
     write_whole_file(out_path, doom::with_gl_pvs(gl, map.source.gl_marker, doom::gl_pvs_lump(pvs)));
     return {"wrote " + out_path + ": " + map.source.gl_path + " with GL_PVS (" + std::to_string(pvs.region_count()) +

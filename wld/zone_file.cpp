@@ -3,6 +3,7 @@
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
 #include "wld/doom/doom_zone.h"
+#include "wld/doom/wad_file.h"
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/hepvs/hepvs_zone.h"
 #include "wld/obj/obj_reader.h"
@@ -10,7 +11,6 @@
 #include "wld/quake/prt_file.h"
 
 #include <filesystem>
-#include <fstream>
 
 namespace pvs {
 
@@ -70,14 +70,6 @@ Zone load_obj_zone(const std::string& obj_path, std::string hepvs_path, const Zo
     return zone;
 }
 
-// "IWAD"/"PWAD" at the start: a Doom WAD or a .gwa (read by the Doom loader itself, with its sibling).
-bool starts_like_wad(const std::string& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    return in.read(magic, 4) && (std::string(magic, 4) == "IWAD" || std::string(magic, 4) == "PWAD");
-}
-
 } // namespace
 
 Zone load_zone(const std::string& path) { return load_zone(path, ZoneLoadOptions{}); }
@@ -92,7 +84,7 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
     }
     if (is_obj_path(path))
         return load_obj_zone(path, options.hepvs, options);
-    if (starts_like_wad(path))
+    if (doom::file_looks_like_wad(path)) // a Doom WAD or a .gwa, read with its sibling
         return doom::load_doom_zone(path, options.map, options.gwa);
     const std::vector<uint8_t> bytes = read_whole_file(path);
     if (quake::looks_like_bsp29(bytes)) {

@@ -447,6 +447,27 @@ DoomMap read_doom_map(const WadFile& wad, const WadFile* gwa, const std::string&
     return map;
 }
 
+OpenedMap open_doom_map(const std::string& path, const std::string& name, const std::string& gwa_path)
+{
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    OpenedMap out;
+    if (upper_case(fs::path(path).extension().string()) == ".GWA") {
+        const std::string wad_path = fs::path(path).replace_extension(".wad").string();
+        if (!fs::exists(wad_path, ec))
+            throw FileError(path, 0, "a .gwa holds only GL nodes: its map lumps are in " + wad_path + ", which is missing");
+        out.wad = read_wad(wad_path);
+        out.gwa = read_wad(path);
+    } else {
+        out.wad = read_wad(path);
+        const std::string beside = gwa_path.empty() ? gwa_path_for(path) : gwa_path;
+        if (!gwa_path.empty() || (beside != path && fs::exists(beside, ec)))
+            out.gwa = read_wad(beside);
+    }
+    out.map = read_doom_map(out.wad, out.gwa ? &*out.gwa : nullptr, name);
+    return out;
+}
+
 uint32_t locate_subsector(const DoomMap& map, double x, double y)
 {
     if (map.nodes.empty())

@@ -108,6 +108,16 @@ std::string gwa_path_for(const std::string& wad_path);
 // `gwa` when it has one for the map, else from `wad`. Throws FileError.
 DoomMap read_doom_map(const WadFile& wad, const WadFile* gwa, const std::string& name);
 
+// A map opened from a path as the engines find it: `path` a .wad (its GL nodes from `gwa_path`
+// when given, else from the .gwa beside it when there is one, else its own) or a .gwa (its map
+// lumps from the .wad beside it). The one place that resolves the files (load, bake, write-back).
+struct OpenedMap {
+    WadFile wad;
+    std::optional<WadFile> gwa;
+    DoomMap map;
+};
+OpenedMap open_doom_map(const std::string& path, const std::string& name, const std::string& gwa_path = {});
+
 // The subsector holding point (x, y), by the GL nodes (§4.4: c = (px - x)*dy - (py - y)*dx,
 // right child when c > 0, points on the line go left).
 uint32_t locate_subsector(const DoomMap& map, double x, double y);

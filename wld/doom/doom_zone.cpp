@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstdio>
 #include <glm/geometric.hpp>
-#include <filesystem>
 #include <map>
 
 namespace pvs::doom {
@@ -389,46 +388,31 @@ void note_maps(Zone& zone, const WadFile& wad)
 
 Zone build_doom_zone(const DoomMap& map, const DoomTextures* textures) { return ZoneBuilder(map, textures).build(); }
 
-Zone load_doom_zone(const std::string& path, const std::string& map_name, const std::string& gwa_path_given)
+Zone load_doom_zone(const std::string& path, const std::string& map_name, const std::string& gwa_path)
 {
-    namespace fs = std::filesystem;
-    const bool is_gwa = fs::path(path).extension() == ".gwa" || fs::path(path).extension() == ".GWA";
-    std::error_code ec;
-    if (is_gwa) {
-        const std::string wad_path = fs::path(path).replace_extension(".wad").string();
-        if (!fs::exists(wad_path, ec))
-            throw FileError(path, 0, "a .gwa holds only GL nodes: its map lumps are in " + wad_path + ", which is missing");
-        const WadFile wad = read_wad(wad_path);
-        const WadFile gwa = read_wad(path);
-        const DoomTextures textures(wad);
-        Zone zone = build_doom_zone(read_doom_map(wad, &gwa, map_name), &textures);
-        note_maps(zone, wad);
-        return zone;
-    }
-    const WadFile wad = read_wad(path);
-    const std::string gwa_path = gwa_path_given.empty() ? gwa_path_for(path) : gwa_path_given;
-    std::optional<WadFile> gwa;
-    if (!gwa_path_given.empty() || (fs::exists(gwa_path, ec) && gwa_path != path))
-        gwa = read_wad(gwa_path);
-    const DoomTextures textures(wad);
-    Zone zone = build_doom_zone(read_doom_map(wad, gwa ? &*gwa : nullptr, map_name), &textures);
-    note_maps(zone, wad);
+    const OpenedMap opened = open_doom_map(path, map_name, gwa_path);
+    const DoomTextures textures(opened.wad);
+    Zone zone = build_doom_zone(opened.map, &textures);
+    note_maps(zone, opened.wad);
     return zone;
 }
 
 std::string next_map_name(const std::string& name, bool secret)
 {
+    // snprintf, not string +: GCC 12 warns (-Wrestrict) on `"E" + std::to_string(e)` inlined.
+    char out[16];
+    const auto episode = [&](int e, int m) { return std::snprintf(out, sizeof out, "E%dM%d", e, m), std::string(out); };
+    const auto map = [&](int n) { return std::snprintf(out, sizeof out, "MAP%02d", n), std::string(out); };
     int e = 0, m = 0;
     if (std::sscanf(name.c_str(), "E%dM%d", &e, &m) == 2 && name.size() == 4) {
         static const int secret_from[5] = {0, 3, 5, 6, 2}; // E1M3, E2M5, E3M6, E4M2 lead to ExM9
         if (secret)
-            return "E" + std::to_string(e) + "M9";
+            return episode(e, 9);
         if (m == 9 && e >= 1 && e <= 4)
-            return "E" + std::to_string(e) + "M" + std::to_string(secret_from[e] + 1);
-        return m < 8 ? "E" + std::to_string(e) + "M" + std::to_string(m + 1) : std::string();
+            return episode(e, secret_from[e] + 1);
+        return m < 8 ? episode(e, m + 1) : std::string();
     }
     if (std::sscanf(name.c_str(), "MAP%d", &m) == 1) {
-        const auto map = [](int n) { return std::string("MAP") + (n < 10 ? "0" : "") + std::to_string(n); };
         if (secret)
             return m == 15 ? map(31) : m == 31 ? map(32) : std::string();
         if (m == 31 || m == 32)

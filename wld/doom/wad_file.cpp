@@ -4,6 +4,7 @@
 #include "wld/common/read_file.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cctype>
 #include <cstring>
 #include <stdexcept>
@@ -77,6 +78,17 @@ std::optional<size_t> WadFile::find_from(const std::string& name, size_t from) c
 bool looks_like_wad(std::span<const uint8_t> bytes)
 {
     return bytes.size() >= 4 && (std::memcmp(bytes.data(), "IWAD", 4) == 0 || std::memcmp(bytes.data(), "PWAD", 4) == 0);
+}
+
+bool file_looks_like_wad(const std::string& path)
+{
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f)
+        return false;
+    uint8_t magic[4] = {};
+    const bool read = std::fread(magic, 1, 4, f) == 4;
+    std::fclose(f);
+    return read && looks_like_wad(magic);
 }
 
 WadFile parse_wad(std::vector<uint8_t> bytes, std::string path)

@@ -55,6 +55,8 @@ std::string upper_case(std::string name);
 
 // True when the bytes start like a WAD ("IWAD" or "PWAD").
 bool looks_like_wad(std::span<const uint8_t> bytes);
+// The same for a file, reading only its first 4 bytes (false when it cannot be read).
+bool file_looks_like_wad(const std::string& path);
 
 // A lump to write: its name (at most 8 characters) and bytes.
 struct WadLumpData {
