@@ -29,6 +29,7 @@ struct InspectOptions {
     std::string bake;
     bool compare = false;
     std::string stability_case;
+    std::string hidden_lines = "faint";
 };
 
 // "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell" (any subset, or "none") -> the toggles.
@@ -106,6 +107,10 @@ void register_inspect_command(CLI::App& app, int& exit_code)
                                               "zonelines, frustum (or none), got '" + text + "'";
             },
             "LIST"));
+    cmd->add_option("--hidden-lines", o->hidden_lines,
+                    "Overlay lines behind the picture's walls: faint, hidden, or shown (no depth test)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"faint", "hidden", "shown"}));
     cmd->add_flag("--pick-centre", o->pick_centre, "Pick the face at the viewport's centre (as a click would)");
     cmd->add_option("--bsp-node", o->bsp_node, "Select this BSP node in the BSP panel (its plane is highlighted)")
         ->check(CLI::NonNegativeNumber);
@@ -129,6 +134,9 @@ void register_inspect_command(CLI::App& app, int& exit_code)
         options.cull_mode = parse_cull_mode(o->cull).value_or(CullMode::PvsFrustum);
         options.report_fps = o->report_fps;
         options.overlays = parse_overlays(o->overlays).value_or(ui::OverlaySettings{});
+        options.overlays.hidden_lines = o->hidden_lines == "hidden" ? ui::HiddenLines::Hidden
+                                        : o->hidden_lines == "shown" ? ui::HiddenLines::Shown
+                                                                     : ui::HiddenLines::Faint;
         options.pick_centre = o->pick_centre;
         options.bsp_node = o->bsp_node;
         options.compare = o->compare;

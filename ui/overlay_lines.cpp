@@ -12,10 +12,12 @@ namespace pvs::ui {
 
 namespace {
 
-// Liang-Barsky: cuts the segment p0-p1 to [0, width] x [0, height]. False when nothing is left.
-bool clip_to_rect(double& x0, double& y0, double& x1, double& y1, double width, double height)
+// Liang-Barsky: the part [t0, t1] of the segment p0-p1 inside [0, width] x [0, height]. False
+// when nothing is left.
+bool clip_params(double x0, double y0, double x1, double y1, double width, double height, double& t0, double& t1)
 {
-    double t0 = 0.0, t1 = 1.0;
+    t0 = 0.0;
+    t1 = 1.0;
     const double dx = x1 - x0, dy = y1 - y0;
     // Each boundary as p * t <= q.
     const double p[4] = {-dx, dx, -dy, dy};
@@ -34,12 +36,30 @@ bool clip_to_rect(double& x0, double& y0, double& x1, double& y1, double width, 
         if (t0 > t1)
             return false;
     }
-    const double ox = x0, oy = y0;
+    return true;
+}
+
+// Cuts the segment p0-p1 to [0, width] x [0, height]. False when nothing is left.
+bool clip_to_rect(double& x0, double& y0, double& x1, double& y1, double width, double height)
+{
+    double t0 = 0.0, t1 = 1.0;
+    if (!clip_params(x0, y0, x1, y1, width, height, t0, t1))
+        return false;
+    const double dx = x1 - x0, dy = y1 - y0, ox = x0, oy = y0;
     x0 = ox + t0 * dx;
     y0 = oy + t0 * dy;
     x1 = ox + t1 * dx;
     y1 = oy + t1 * dy;
     return true;
+}
+
+void put_pixel(uint8_t* p, uint32_t rgb, uint32_t alpha)
+{
+    for (int c = 0; c < 3; ++c) {
+        const uint32_t line = (rgb >> (16 - 8 * c)) & 0xFF;
+        p[c] = alpha >= 255 ? uint8_t(line) : uint8_t((line * alpha + p[c] * (255 - alpha) + 127) / 255);
+    }
+    p[3] = 255;
 }
 
 int32_t pixel_index(double coordinate, uint32_t size)
@@ -49,7 +69,7 @@ int32_t pixel_index(double coordinate, uint32_t size)
 
 } // namespace
 
-uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb)
+uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb, uint32_t alpha)
 {
     if (image.width == 0 || image.height == 0 || image.rgba.size() != size_t(image.width) * image.height * 4)
         return 0;
@@ -67,14 +87,9 @@ uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb)
     const int32_t dx = std::abs(xe - x), dy = -std::abs(ye - y);
     const int32_t sx = x < xe ? 1 : -1, sy = y < ye ? 1 : -1;
     int32_t error = dx + dy;
-    const uint8_t r = uint8_t(rgb >> 16), g = uint8_t(rgb >> 8), bl = uint8_t(rgb);
     uint32_t set = 0;
     for (;;) {
-        uint8_t* p = image.rgba.data() + (size_t(uint32_t(y)) * image.width + uint32_t(x)) * 4;
-        p[0] = r;
-        p[1] = g;
-        p[2] = bl;
-        p[3] = 255;
+        put_pixel(image.rgba.data() + (size_t(uint32_t(y)) * image.width + uint32_t(x)) * 4, rgb, alpha);
         ++set;
         if (x == xe && y == ye)
             break;
@@ -101,19 +116,57 @@ uint32_t draw_line_3d(Image& image, const Camera& view, const glm::vec3& a, cons
     return draw_line_3d(image, LineProjection(view), a, b, rgb);
 }
 
+namespace {
+
+// The part of the projected segment pa-pb in the image, cut into pieces of at most
+// kDepthPiecePixels; each piece is drawn in full or as hidden_lines says, by the occlusion of
+// its middle point. wa/wb are the zone points of pa/pb and da/db their view-space depths: the
+// screen fraction s maps back to the segment at s*da / (s*da + (1-s)*db) (depth is linear in
+// 1/w on the screen, so the 3-D parameter is not s itself).
+uint32_t draw_depth_tested(Image& image, const LineProjection& view, glm::vec2 pa, glm::vec2 pb,
+                           const glm::vec3& wa, const glm::vec3& wb, float da, float db, uint32_t rgb)
+{
+    double s0 = 0.0, s1 = 1.0;
+    if (!std::isfinite(pa.x) || !std::isfinite(pa.y) || !std::isfinite(pb.x) || !std::isfinite(pb.y) ||
+        !clip_params(pa.x, pa.y, pb.x, pb.y, double(image.width), double(image.height), s0, s1))
+        return 0;
+    const glm::vec2 d = pb - pa;
+    const double length = double(glm::length(d)) * (s1 - s0);
+    const uint32_t pieces = uint32_t(std::clamp(std::ceil(length / kDepthPiecePixels), 1.0, 4096.0));
+    uint32_t set = 0;
+    for (uint32_t k = 0; k < pieces; ++k) {
+        const double from = s0 + (s1 - s0) * k / pieces, to = s0 + (s1 - s0) * (k + 1) / pieces;
+        const double mid = 0.5 * (from + to);
+        const double t = mid * da / (mid * da + (1.0 - mid) * db);
+        const bool hidden = view.occlusion->hidden(wa + (wb - wa) * float(t));
+        if (hidden && view.hidden_lines == HiddenLines::Hidden)
+            continue;
+        set += draw_line_2d(image, pa + d * float(from), pa + d * float(to), rgb, hidden ? kFaintLineAlpha : 255);
+    }
+    return set;
+}
+
+} // namespace
+
 uint32_t draw_line_3d(Image& image, const LineProjection& view, const glm::vec3& a, const glm::vec3& b, uint32_t rgb)
 {
     const glm::mat4& to_view = view.to_view;
     glm::vec4 va = to_view * glm::vec4(a, 1.0f), vb = to_view * glm::vec4(b, 1.0f);
+    glm::vec3 wa = a, wb = b;
     // View space looks down -z: depth = -z. Keep the part with depth >= near.
     const float near_plane = view.near_distance;
-    const float da = -va.z, db = -vb.z;
+    float da = -va.z, db = -vb.z;
     if (!(da >= near_plane) && !(db >= near_plane))
         return 0; // entirely behind the near plane (or NaN)
     if (da < near_plane || db < near_plane) {
         const float t = (near_plane - da) / (db - da); // da != db: one is in front, one behind
         const glm::vec4 cut = va + (vb - va) * t;
-        (da < near_plane ? va : vb) = cut;
+        const glm::vec3 world_cut = a + (b - a) * t;
+        if (da < near_plane) {
+            va = cut, wa = world_cut, da = near_plane;
+        } else {
+            vb = cut, wb = world_cut, db = near_plane;
+        }
     }
     const glm::mat4& projection = view.projection;
     const float w = float(image.width), h = float(image.height);
@@ -122,6 +175,9 @@ uint32_t draw_line_3d(Image& image, const LineProjection& view, const glm::vec3&
         const glm::vec2 ndc(c.x / c.w, c.y / c.w);
         return glm::vec2((ndc.x * 0.5f + 0.5f) * w, (0.5f - ndc.y * 0.5f) * h);
     };
+    if (view.occlusion && view.hidden_lines != HiddenLines::Shown && image.width > 0 && image.height > 0 &&
+        image.rgba.size() == size_t(image.width) * image.height * 4)
+        return draw_depth_tested(image, view, to_pixel(va), to_pixel(vb), wa, wb, da, db, rgb);
     return draw_line_2d(image, to_pixel(va), to_pixel(vb), rgb);
 }
 
@@ -146,6 +202,11 @@ std::array<glm::vec3, 8> frustum_corners(const Camera& camera)
 }
 
 uint32_t draw_frustum(Image& image, const Camera& view, const Camera& frustum, uint32_t rgb)
+{
+    return draw_frustum(image, LineProjection(view), frustum, rgb);
+}
+
+uint32_t draw_frustum(Image& image, const LineProjection& view, const Camera& frustum, uint32_t rgb)
 {
     const std::array<glm::vec3, 8> c = frustum_corners(frustum);
     uint32_t set = 0;

@@ -58,12 +58,13 @@ void paint_portals(Image& image, const OverlayScene& scene, const LineProjection
     }
 }
 
-void paint_zone_lines(Image& image, const OverlayScene& scene, std::vector<OverlayLabel>& labels)
+void paint_zone_lines(Image& image, const OverlayScene& scene, const LineProjection& lines,
+                      std::vector<OverlayLabel>& labels)
 {
     const Zone& zone = *scene.zone;
     std::vector<bool> drawn(zone.zone_lines.size(), false);
     auto show = [&](const Aabb& box, const std::string& target) {
-        draw_box_3d(image, scene.view, box, kZoneLineColor);
+        draw_box_3d(image, lines, box, kZoneLineColor);
         if (box.empty())
             return;
         if (const auto at = project_to_pixel(scene.view, image.width, image.height, box.center()))
@@ -134,7 +135,9 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
     labels.clear();
     if (!scene.zone || image.rgba.empty())
         return;
-    const LineProjection lines(scene.view); // the camera's matrices, once for every line
+    LineProjection lines(scene.view); // the camera's matrices, once for every line
+    lines.occlusion = scene.occlusion;
+    lines.hidden_lines = settings.hidden_lines;
     if (settings.split_planes)
         paint_split_planes(image, scene, lines);
     if (settings.pvs_membership_boxes)
@@ -145,15 +148,28 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
                 draw_box_3d(image, lines, scene.zone->regions[r].bounds, region_color(r));
     if (settings.portals)
         paint_portals(image, scene, lines);
+    for (uint32_t r : scene.edited_regions)
+        if (r < scene.zone->region_count())
+            draw_box_3d(image, lines, scene.zone->regions[r].bounds, kEditedPairColor);
     if (settings.zone_lines)
-        paint_zone_lines(image, scene, labels);
+        paint_zone_lines(image, scene, lines, labels);
     if (settings.view_cell && scene.zone->view_grid && scene.cull_cell >= 0)
         draw_box_3d(image, lines, scene.zone->view_grid->cell_bounds(uint32_t(scene.cull_cell)), kViewCellColor);
     if (settings.locked_frustum && scene.locked)
-        draw_frustum(image, scene.view, scene.cull, kLockedFrustumColor);
+        draw_frustum(image, lines, scene.cull, kLockedFrustumColor);
 }
 
-std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone)
+const char* hidden_lines_name(HiddenLines mode)
+{
+    switch (mode) {
+    case HiddenLines::Shown: return "shown";
+    case HiddenLines::Faint: return "faint";
+    case HiddenLines::Hidden: return "hidden";
+    }
+    return "?";
+}
+
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone, bool edited_pairs)
 {
     std::vector<LegendEntry> legend;
     if (settings.split_planes) {
@@ -174,6 +190,8 @@ std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool gr
         legend.push_back({"locked culling frustum", kLockedFrustumColor});
     if (settings.view_cell && grid_zone)
         legend.push_back({"the camera's view cell (its PVS row)", kViewCellColor});
+    if (edited_pairs)
+        legend.push_back({"hand-edited pair with the camera's region", kEditedPairColor});
     return legend;
 }
 

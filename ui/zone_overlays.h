@@ -17,10 +17,14 @@
 //  - Locked frustum: the culling camera's view volume while it is locked (kLockedFrustumColor).
 //  - View cell (grid zones: OBJ + .hepvs): the culling camera's grid cell, whose PVS row culls
 //    (kViewCellColor); with PVS membership on, its objects are the drawn and frustum-culled boxes.
-// Overlays are drawn on top without a depth test (see overlay_fill.h); IdBuffer pictures must
-// stay face codes, so callers do not paint them.
+// Lines (plane outlines, portals, boxes, zone lines, the frustum, the view cell) are depth-tested
+// when the scene carries a LineOcclusion (ui/picture_occlusion.h): the parts behind the
+// picture's walls are drawn faint or hidden (OverlaySettings::hidden_lines). The translucent
+// plane fills are not tested (one ray per filled pixel would cost a frame); their outlines are.
+// IdBuffer pictures must stay face codes, so callers do not paint them.
 #pragma once
 
+#include "ui/overlay_lines.h"
 #include "ui/software_renderer.h"
 #include "visibility/camera.h"
 #include "visibility/geometry/winding.h"
@@ -46,7 +50,10 @@ struct OverlaySettings {
     bool zone_lines = true;
     bool locked_frustum = true;
     bool view_cell = true;
+    // Lines behind the picture's walls (needs OverlayScene::occlusion; Shown = no depth test).
+    HiddenLines hidden_lines = HiddenLines::Faint;
 };
+const char* hidden_lines_name(HiddenLines mode); // shown, faint, hidden
 
 // A region's part in this frame's culling.
 enum class Membership : uint8_t { Current, Drawn, CulledByFrustum, CulledByPvs };
@@ -65,6 +72,7 @@ inline constexpr uint32_t kCurrentSplitPlaneColor = 0xFFE040;
 inline constexpr uint32_t kPortalColor = 0x00FFC0;
 inline constexpr uint32_t kZoneLineColor = 0xFF00FF; // as kFlagTints' zone line
 inline constexpr uint32_t kViewCellColor = 0x60A0FF;
+inline constexpr uint32_t kEditedPairColor = 0xFF60FF;
 inline constexpr uint32_t kSplitPlaneAlpha = 24; // a dozen planes overlap: keep each faint
 inline constexpr uint32_t kCurrentSplitPlaneAlpha = 90;
 
@@ -89,6 +97,10 @@ struct OverlayScene {
     int32_t highlighted_node = -1;       // -1: the deepest of path_nodes
     const std::vector<Winding>* node_polygons = nullptr; // per node (node_plane_polygons)
     const PortalSet* portals = nullptr;
+    const LineOcclusion* occlusion = nullptr; // depth test of the lines (null: none)
+    // Regions r whose pair (cull_region, r) a hand edit changed (ascending): boxed in
+    // kEditedPairColor so the edits show where they act.
+    std::span<const uint32_t> edited_regions;
 };
 
 // A text label at a pixel of the picture (a zone line's target).
@@ -108,7 +120,9 @@ struct LegendEntry {
     const char* name;
     uint32_t rgb;
 };
-// grid_zone: the zone has a view grid (its view cell overlay is then listed).
-std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone = false);
+// grid_zone: the zone has a view grid (its view cell overlay is then listed); edited_pairs: the
+// hand-edited pairs are boxed this frame.
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone = false,
+                                        bool edited_pairs = false);
 
 } // namespace pvs::ui

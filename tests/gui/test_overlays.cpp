@@ -196,6 +196,7 @@ TEST_F(OverlayInspector, EachOverlayDrawsOnlyWhenOn)
         state.overlays = {};
         state.overlays.zone_lines = false;
         state.overlays.*toggle = true;
+        state.wait_for_portals(); // built on a background thread: wait, so this frame has them
         state.frame();
         EXPECT_GT(changed_pixels(plain, state.image()), 20u);
     }

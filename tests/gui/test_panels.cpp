@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <imgui_internal.h>
 
 namespace pvs {
@@ -137,6 +139,46 @@ TEST_F(NullBackend, RegionPanelListsTheRowAndColumnOfTheActivePvs)
     frame([&] { gui::draw_inspector(state, panels, 0.0f); });
     EXPECT_TRUE(panels.region.row.empty());
     EXPECT_TRUE(panels.region.column.empty());
+}
+
+// The BSP panel is a nested tree with the camera's path open: every node of the path is drawn
+// (so each of its ancestors was open), and after the camera moves to another region the new
+// path is drawn too. Independent of the panel: the path comes from walking the tree.
+TEST_F(NullBackend, BspTreeOpensTheCamerasPath)
+{
+    auto draw = [&] {
+        frame([&] {
+            ImGui::SetNextWindowSize({400, 600}, ImGuiCond_Always);
+            gui::draw_bsp_panel(state, panels.bsp);
+        });
+    };
+    auto path_drawn = [&] {
+        state.frame();
+        draw();
+        draw(); // the second frame draws inside what the first opened
+        std::vector<int32_t> drawn = panels.bsp.drawn_nodes;
+        std::sort(drawn.begin(), drawn.end());
+        size_t found = 0;
+        for (const PathStep& step : state.camera_path())
+            found += std::binary_search(drawn.begin(), drawn.end(), int32_t(step.node)) ? 1 : 0;
+        return std::pair(found, state.camera_path().size());
+    };
+    const auto [found, length] = path_drawn();
+    ASSERT_GT(length, 2u);
+    EXPECT_EQ(found, length);
+    EXPECT_LT(panels.bsp.drawn_nodes.size(), state.zone().tree.nodes.size()) << "closed subtrees are not visited";
+
+    const std::vector<PathStep> before = state.camera_path();
+    const Zone& zone = state.zone();
+    for (uint32_t r = 0; r < zone.region_count(); ++r) { // the farthest region: another path
+        state.go_to_region(zone.region_count() - 1 - r);
+        state.frame();
+        if (state.camera_path().size() > 2 && state.camera_path().back().node != before.back().node)
+            break;
+    }
+    ASSERT_NE(state.camera_path().back().node, before.back().node);
+    const auto [found2, length2] = path_drawn();
+    EXPECT_EQ(found2, length2);
 }
 
 } // namespace

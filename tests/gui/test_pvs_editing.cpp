@@ -7,6 +7,8 @@
 #include "visibility/methods/vis_method.h"
 
 #include <gtest/gtest.h>
+#include <iterator>
+#include <cstring>
 
 #include <filesystem>
 #include <fstream>
@@ -97,8 +99,45 @@ TEST_F(EditingInspector, RowFromPortalFastAndTheListRoundTrip)
 namespace pvs::gui {
 namespace {
 
-// Save on a real map: the copy read back has the edited PVS; a generated zone (no file) says it
-// cannot be saved.
+std::vector<uint8_t> file_bytes(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// BSP 29 (quake-doom-hepvs.md): a version word, then 15 lumps of (offset, length). Every lump
+// but VISIBILITY (4) must be the original's byte for byte, leaves (10, 28 bytes each) apart from
+// their visofs field (bytes 4..7), which points into the new visibility lump.
+void expect_only_the_pvs_changed(const std::string& original_path, const std::string& saved_path)
+{
+    const std::vector<uint8_t> original = file_bytes(original_path), saved = file_bytes(saved_path);
+    ASSERT_GE(original.size(), 124u);
+    ASSERT_GE(saved.size(), 124u);
+    auto lump = [](const std::vector<uint8_t>& bsp, int index) {
+        int32_t offset = 0, length = 0;
+        std::memcpy(&offset, bsp.data() + 4 + 8 * index, 4);
+        std::memcpy(&length, bsp.data() + 8 + 8 * index, 4);
+        EXPECT_GE(offset, 0);
+        EXPECT_LE(size_t(offset) + size_t(length), bsp.size());
+        return std::vector<uint8_t>(bsp.begin() + offset, bsp.begin() + offset + length);
+    };
+    EXPECT_EQ(std::memcmp(original.data(), saved.data(), 4), 0) << "version";
+    for (int i = 0; i < 15; ++i) {
+        if (i == 4)
+            continue;
+        std::vector<uint8_t> a = lump(original, i), b = lump(saved, i);
+        ASSERT_EQ(a.size(), b.size()) << "lump " << i;
+        if (i == 10)
+            for (size_t leaf = 0; leaf < a.size() / 28; ++leaf) {
+                std::memset(a.data() + 28 * leaf + 4, 0, 4);
+                std::memset(b.data() + 28 * leaf + 4, 0, 4);
+            }
+        EXPECT_TRUE(a == b) << "lump " << i << " changed";
+    }
+}
+
+// Save on a real map: the copy read back has the edited PVS and every other byte of the file
+// (lump by lump); a generated zone (no file) says it cannot be saved.
 TEST(EditingOnE1m1, SaveWritesTheEditedPvsIntoACopyOfTheBsp)
 {
     SHARED_DATA_OR_SKIP(e1m1, "quake/e1m1.bsp");
@@ -126,6 +165,7 @@ TEST(EditingOnE1m1, SaveWritesTheEditedPvsIntoACopyOfTheBsp)
         for (uint32_t c = 0; c < file.region_count(); ++c)
             differences += saved.baked_pvs->visible(r, c) != state.active_pvs()->visible(r, c);
     EXPECT_EQ(differences, 0u);
+    expect_only_the_pvs_changed(e1m1, out);
     std::filesystem::remove(out);
 }
 

@@ -128,6 +128,11 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     // before it goes.
     bake_.stop();
     compare_.stop();
+    if (portal_build_.valid())
+        portal_build_.wait(); // it reads the zone about to go
+    portal_build_ = {};
+    occlusion_.reset();
+    occlusion_frame_ = 0;
     culler_.reset();
     if (renderer_)
         renderer_->forget_zone();
@@ -270,6 +275,8 @@ const CullStats& InspectorState::frame()
 
     poll_bake();
     compare_.poll();
+    take_finished_portals();
+    ++frame_number_; // first: the overlays' per-frame caches key on it
     last_cull_ = culler_->cull(cull_, {cull_mode, true}, visible_);
     update_after_pvs();
     try {
@@ -293,7 +300,6 @@ const CullStats& InspectorState::frame()
         last_render_ = {};
         labels_.clear();
     }
-    ++frame_number_;
 
     const CullStats& s = last_cull_;
     const FrameTimes times{float(s.lookup_us), float(s.pvs_us), float(s.frustum_us), float(last_render_.draw_ms)};

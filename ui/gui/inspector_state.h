@@ -26,6 +26,7 @@
 #include "ui/gui/bake_job.h"
 #include "ui/gui/compare_job.h"
 #include "ui/gui/frame_history.h"
+#include "ui/picture_occlusion.h"
 #include "ui/software_renderer.h"
 #include "ui/zone_overlays.h"
 #include "visibility/camera.h"
@@ -38,6 +39,7 @@
 #include "visibility/zone_stats.h"
 
 #include <cstdint>
+#include <future>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
@@ -62,6 +64,14 @@ inline constexpr float kFastFactor = 4.0f;
 inline constexpr float kSpeedStep = 1.25f;
 inline constexpr float kLookDegreesPerPixel = 0.15f;
 inline constexpr float kMaxPitchDegrees = 89.0f;
+
+// What the mouse is over in the picture: the face, the regions that list it and their flags.
+struct HoverInfo {
+    uint32_t face = ui::kNoFace;
+    std::span<const uint32_t> regions; // ascending; valid until the zone changes
+    uint32_t flags = 0;                // RegionFlag bits of those regions together
+    float distance = 0.0f;             // from the eye
+};
 
 // A face picked in the viewport and the regions that list it.
 struct Selection {
@@ -161,10 +171,16 @@ public:
     int32_t selected_node = -1;
     // Every node's split plane clipped to its cell (computed on first use per zone).
     const std::vector<Winding>& node_polygons();
-    // The zone's portals: its own, else built from its tree on first use (empty set when the
-    // tree gives none).
-    const PortalSet& portals();
-    bool portals_ready() const { return zone_ && (zone_->portals || built_portals_); }
+    // The zone's portals: its own, else built from its tree on a background thread, started by
+    // request_portals() (the portal overlay and the region panel's neighbours request them), so
+    // a large zone does not freeze the window; frame() takes the finished set. ready_portals() is
+    // null until then (an empty set when the tree gives none). wait_for_portals() blocks (tests,
+    // scripts). Opening another zone waits for a build in flight (it reads the zone).
+    void request_portals();
+    const PortalSet* ready_portals() const;
+    bool portals_ready() const { return ready_portals() != nullptr; }
+    bool portals_building() const { return portal_build_.valid(); }
+    const PortalSet& wait_for_portals();
     // Regions whose leaves are under `node` (a node index), ascending.
     std::vector<uint32_t> regions_under(int32_t node) const;
 
@@ -228,6 +244,18 @@ public:
     const std::string& stability_case_name() const { return case_name_; }
     const std::vector<std::string>& stability_case_missing() const { return case_missing_; }
 
+    // ---- Hover -----------------------------------------------------------------------------------
+    // The face of the last frame's picture under pixel (x, y) by a ray from the view camera
+    // against the faces the picture drew, front sides (ui/picture_occlusion.h): one ray, cheap
+    // enough for every frame the mouse is over the picture, where pick() renders an ID picture.
+    // nullopt for the background, a pixel outside the picture or no zone.
+    std::optional<HoverInfo> hover(uint32_t x, uint32_t y);
+    // Regions whose pair with the culling camera's row a hand edit changed, last frame (boxed
+    // on the picture in ui::kEditedPairColor while the edited PVS culls).
+    const std::vector<uint32_t>& edited_pairs() const { return edited_pairs_; }
+    // Rays the depth test of the overlay lines cast in the last frame (0 when it was off).
+    uint64_t overlay_depth_rays() const { return overlay_depth_rays_; }
+
     // ---- Selection -----------------------------------------------------------------------------
     // Picks the face under pixel (x, y) of the last frame's picture (an ID render of the same
     // camera and visible set) and selects it. Returns the selection, or nullopt (and clears it)
@@ -252,6 +280,12 @@ private:
     void rebuild_culler();
     void paint_overlays();
     void update_after_pvs();
+    void take_finished_portals();
+    std::span<const uint32_t> drawn_regions() const; // what the picture drew this frame
+    // The picture's occlusion for the last frame (built once per zone, set per frame); null when
+    // Embree cannot give one (error() says why).
+    const ui::PictureOcclusion* picture_occlusion();
+    void update_edited_pairs();
 
     std::unique_ptr<Zone> zone_;
     std::unique_ptr<Culler> culler_;
@@ -285,6 +319,11 @@ private:
     std::vector<uint32_t> path_nodes_;
     std::optional<std::vector<Winding>> node_polygons_;
     std::optional<PortalSet> built_portals_;
+    std::future<PortalSet> portal_build_; // after zone_: destroyed (waited for) before it
+    std::unique_ptr<ui::PictureOcclusion> occlusion_;
+    uint64_t occlusion_frame_ = 0; // frame_number_ the occlusion was set for (0: none)
+    uint64_t overlay_depth_rays_ = 0;
+    std::vector<uint32_t> edited_pairs_; // the overlay's hand-edited pairs this frame
 
     PvsSource pvs_source_ = PvsSource::None;
     std::optional<Pvs> baked_pvs_;

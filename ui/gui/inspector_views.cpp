@@ -36,19 +36,40 @@ const std::vector<Winding>& InspectorState::node_polygons()
     return *node_polygons_;
 }
 
-const PortalSet& InspectorState::portals()
+void InspectorState::request_portals()
+{
+    if (!zone_ || zone_->portals || built_portals_ || portal_build_.valid())
+        return;
+    portal_build_ = std::async(std::launch::async, [zone = zone_.get()] {
+        try {
+            return build_zone_portals(*zone);
+        } catch (const std::exception&) { // bad_alloc on a hostile tree: no portals
+            return PortalSet{};
+        }
+    });
+}
+
+void InspectorState::take_finished_portals()
+{
+    if (portal_build_.valid() && portal_build_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+        built_portals_ = portal_build_.get();
+}
+
+const PortalSet* InspectorState::ready_portals() const
 {
     if (zone_ && zone_->portals)
-        return *zone_->portals;
-    if (!built_portals_) {
-        try {
-            built_portals_ = zone_ ? build_zone_portals(*zone_) : PortalSet{};
-        } catch (const std::exception& e) { // bad_alloc on a hostile tree: no portals, say why
-            error_ = e.what();
-            built_portals_ = PortalSet{};
-        }
-    }
-    return *built_portals_;
+        return &*zone_->portals;
+    return built_portals_ ? &*built_portals_ : nullptr;
+}
+
+const PortalSet& InspectorState::wait_for_portals()
+{
+    static const PortalSet kNone;
+    request_portals();
+    if (portal_build_.valid())
+        built_portals_ = portal_build_.get();
+    const PortalSet* set = ready_portals();
+    return set ? *set : kNone;
 }
 
 std::vector<uint32_t> InspectorState::regions_under(int32_t node) const
@@ -112,9 +133,76 @@ void InspectorState::paint_overlays()
     scene.highlighted_node = selected_node;
     if (overlays.split_planes)
         scene.node_polygons = &node_polygons();
-    if (overlays.portals)
-        scene.portals = &portals();
+    if (overlays.portals) {
+        request_portals();
+        scene.portals = ready_portals();
+    }
+    if (overlays.hidden_lines != ui::HiddenLines::Shown)
+        scene.occlusion = picture_occlusion();
+    update_edited_pairs();
+    scene.edited_regions = edited_pairs_;
     ui::paint_overlays(image_, overlays, scene, labels_);
+    overlay_depth_rays_ = occlusion_ && scene.occlusion ? occlusion_->rays() : 0;
+}
+
+std::span<const uint32_t> InspectorState::drawn_regions() const
+{
+    const bool tinted = overlays.pvs_membership && render_mode != ui::RenderMode::IdBuffer;
+    return tinted ? std::span<const uint32_t>(all_regions_) : std::span<const uint32_t>(visible_);
+}
+
+const ui::PictureOcclusion* InspectorState::picture_occlusion()
+{
+    if (!zone_)
+        return nullptr;
+    if (!occlusion_) {
+        try {
+            occlusion_ = std::make_unique<ui::PictureOcclusion>(*zone_);
+        } catch (const std::exception& e) {
+            error_ = std::string("depth test of the overlay lines: ") + e.what();
+            overlays.hidden_lines = ui::HiddenLines::Shown; // do not try again every frame
+            return nullptr;
+        }
+    }
+    if (occlusion_frame_ != frame_number_) {
+        occlusion_->set_frame(*zone_, view_, image_.width, image_.height, drawn_regions());
+        occlusion_frame_ = frame_number_;
+    }
+    return occlusion_.get();
+}
+
+void InspectorState::update_edited_pairs()
+{
+    edited_pairs_.clear();
+    if (pvs_source_ != PvsSource::Edited || !editor_)
+        return;
+    // The row the culler uses: the view cell's on grid zones, the region's otherwise.
+    const int32_t row = zone_->view_grid ? last_cull_.cell : last_cull_.region;
+    if (row < 0 || uint32_t(row) >= editor_->row_count())
+        return;
+    for (uint32_t r = 0; r < editor_->region_count(); ++r)
+        if (editor_->edited(uint32_t(row), r))
+            edited_pairs_.push_back(r);
+}
+
+std::optional<HoverInfo> InspectorState::hover(uint32_t x, uint32_t y)
+{
+    if (!zone_ || x >= image_.width || y >= image_.height)
+        return std::nullopt;
+    const ui::PictureOcclusion* occlusion = picture_occlusion();
+    if (!occlusion)
+        return std::nullopt;
+    const auto hit = occlusion->face_under(pixel_ray(view_, image_.width, image_.height, x, y).direction);
+    if (!hit)
+        return std::nullopt;
+    HoverInfo info;
+    info.face = hit->face;
+    info.distance = hit->distance;
+    info.regions = regions_of_face(hit->face);
+    for (uint32_t r : info.regions)
+        if (r < zone_->region_count())
+            info.flags |= zone_->regions[r].flags;
+    return info;
 }
 
 // ---- PVS source and bake -----------------------------------------------------------------------

@@ -74,6 +74,11 @@ void draw_region_panel(InspectorState& state, RegionPanel& panel);
 
 // ---- BSP: the camera's path through the tree, a node browser, the regions under a node ----------
 struct BspPanel {
+    // The nested tree: the camera's path is opened whenever it changes (the user may close it
+    // again); drawn_nodes lists the node ids the last frame drew as lines (tests read it).
+    std::vector<uint32_t> open_path;  // the path the tree last opened, root first
+    std::vector<uint8_t> on_path;     // per node: on the camera's path now
+    std::vector<int32_t> drawn_nodes;
     uint64_t parents_zone = 0;       // the zone parents/depths are for
     std::vector<int32_t> parents;    // per node: its parent node, -1 for the root or unreached
     std::vector<int32_t> depths;     // per node: its depth, -1 when unreached

@@ -39,7 +39,7 @@ void update_lists(InspectorState& state, int32_t region, RegionPanel& panel)
         panel.column = pvs_column_regions(*pvs, uint32_t(region));
     }
     if (neighbours_ready)
-        panel.neighbours = portal_neighbours(state.portals(), uint32_t(region));
+        panel.neighbours = portal_neighbours(*state.ready_portals(), uint32_t(region));
 }
 
 std::string flag_names(uint32_t flags)
@@ -94,8 +94,10 @@ void draw_lists(InspectorState& state, RegionPanel& panel)
     if (!panel.lists_neighbours) {
         ImGui::TextDisabled("neighbours through portals:");
         ImGui::SameLine();
-        if (ImGui::SmallButton("build portals"))
-            state.portals();
+        if (state.portals_building())
+            ImGui::TextDisabled("building the portals...");
+        else if (ImGui::SmallButton("build portals"))
+            state.request_portals();
         return;
     }
     ImGui::Text("%zu neighbours through portals", panel.neighbours.size());

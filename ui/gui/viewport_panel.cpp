@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace pvs::gui {
@@ -33,9 +34,10 @@ void draw_overlay(const InspectorState& state, ImVec2 origin)
     const CullStats& s = state.last_cull();
     char text[160];
     const bool grid = state.has_zone() && state.zone().view_grid;
-    std::snprintf(text, sizeof text, "%s %d  |  drawn %u / %u %s  |  %s%s", grid ? "view cell" : "region",
+    std::snprintf(text, sizeof text, "%s %d  |  drawn %u / %u %s  |  %s%s%s", grid ? "view cell" : "region",
                   grid ? s.cell : s.region, s.regions_after_frustum, s.regions_total, grid ? "objects" : "regions",
-                  cull_mode_name(state.cull_mode), state.locked() ? "  |  LOCKED" : "");
+                  cull_mode_name(state.cull_mode), state.locked() ? "  |  LOCKED" : "",
+                  state.overlays.portals && state.portals_building() ? "  |  building portals..." : "");
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 at{origin.x + 6.0f, origin.y + 4.0f};
     const ImVec2 size = ImGui::CalcTextSize(text);
@@ -62,6 +64,12 @@ void draw_overlay_menu(InspectorState& state)
         ImGui::MenuItem("Zone lines", nullptr, &o.zone_lines);
         ImGui::MenuItem("Locked culling frustum", nullptr, &o.locked_frustum);
         ImGui::MenuItem("View cell (OBJ + .hepvs zones)", nullptr, &o.view_cell);
+        ImGui::Separator();
+        ImGui::TextDisabled("lines behind walls");
+        for (ui::HiddenLines mode : {ui::HiddenLines::Faint, ui::HiddenLines::Hidden, ui::HiddenLines::Shown})
+            if (ImGui::MenuItem(mode == ui::HiddenLines::Shown ? "shown (no depth test)" : ui::hidden_lines_name(mode),
+                                nullptr, o.hidden_lines == mode))
+                o.hidden_lines = mode;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Draw")) {
@@ -76,8 +84,10 @@ void draw_overlay_menu(InspectorState& state)
 // The legend, bottom left of the picture, always: the enabled overlays' colours, or a hint.
 void draw_legend(const InspectorState& state, ImVec2 origin, ImVec2 size)
 {
+    const bool edits = state.pvs_source() == PvsSource::Edited && state.pvs_editor() &&
+                       state.pvs_editor()->edit_count() > 0;
     const std::vector<ui::LegendEntry> legend =
-        ui::overlay_legend(state.overlays, state.has_zone() && state.zone().view_grid.has_value());
+        ui::overlay_legend(state.overlays, state.has_zone() && state.zone().view_grid.has_value(), edits);
     const float line = ImGui::GetTextLineHeight() + 2.0f, swatch = ImGui::GetTextLineHeight() - 2.0f;
     float width = ImGui::CalcTextSize("no overlays (Overlays menu)").x;
     for (const ui::LegendEntry& e : legend)
@@ -105,6 +115,37 @@ void draw_labels(const InspectorState& state, ImVec2 origin)
                             IM_COL32(0, 0, 0, 170));
         draw->AddText(at, to_imgui(label.rgb), label.text.c_str());
     }
+}
+
+std::string flag_list(uint32_t flags)
+{
+    std::string names;
+    for (uint32_t bit = 0; bit < kRegionFlagCount; ++bit)
+        if (flags & (1u << bit))
+            names += (names.empty() ? "" : ", ") + std::string(region_flag_name(1u << bit));
+    return names.empty() ? "no flags" : names;
+}
+
+// Hovering names the face under the mouse, its regions and their flags (a ray, not a render).
+void draw_hover(InspectorState& state, const ViewportPanel& panel, ImVec2 origin)
+{
+    if (!ImGui::IsItemHovered() || panel.looking || panel.orbiting)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float x = io.MousePos.x - origin.x, y = io.MousePos.y - origin.y;
+    if (x < 0.0f || y < 0.0f)
+        return;
+    const std::optional<HoverInfo> hover = state.hover(uint32_t(x), uint32_t(y));
+    if (!hover)
+        return;
+    std::string regions;
+    for (size_t i = 0; i < hover->regions.size() && i < 4; ++i)
+        regions += (i ? ", " : "") + std::to_string(hover->regions[i]);
+    if (hover->regions.size() > 4)
+        regions += ", ... (" + std::to_string(hover->regions.size()) + ")";
+    ImGui::SetTooltip("face %u  |  region %s  |  %s  |  %.0f units", hover->face,
+                      regions.empty() ? "none" : regions.c_str(), flag_list(hover->flags).c_str(),
+                      double(hover->distance));
 }
 
 // Middle drag orbits about the picked point (the first drag aims the camera at it).
@@ -164,6 +205,7 @@ void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_s
     draw_overlay(state, origin);
     draw_legend(state, origin, size);
     handle_orbit(state, panel);
+    draw_hover(state, panel, origin);
 
     if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
         CameraInput wheel;

@@ -15,6 +15,9 @@ struct MeshTracer::Impl {
     std::vector<uint32_t> triangle_face;  // Embree primitive -> mesh face
     std::vector<glm::vec3> triangle_normal; // counter-clockwise front
 
+    Hit intersect(RTCIntersectContext& context, const glm::vec3& origin, const glm::vec3& direction,
+                  float t_far) const;
+
     ~Impl()
     {
         if (scene)
@@ -43,7 +46,7 @@ MeshTracer::MeshTracer(const Zone& zone) : impl_(std::make_unique<Impl>())
     if (!impl_->device)
         throw std::runtime_error("Embree: cannot create a device");
     impl_->scene = rtcNewScene(impl_->device);
-    rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
     if (!indices.empty() && !mesh.positions.empty()) {
         RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -69,10 +72,51 @@ MeshTracer::~MeshTracer() = default;
 
 size_t MeshTracer::triangle_count() const { return impl_->triangle_face.size(); }
 
-MeshTracer::Hit MeshTracer::first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far) const
+namespace {
+
+// Embree hands the filter the context it was given: ours carries the tracer's tables and the
+// caller's filter after Embree's own fields.
+struct FilterContext {
+    RTCIntersectContext base;
+    const std::vector<uint32_t>* triangle_face;
+    const std::vector<glm::vec3>* triangle_normal;
+    const MeshTracer::FaceFilter* filter;
+};
+
+void reject_filtered_hits(const RTCFilterFunctionNArguments* args)
 {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    const auto* context = reinterpret_cast<const FilterContext*>(args->context);
+    const MeshTracer::FaceFilter& filter = *context->filter;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0)
+            continue;
+        const unsigned primitive = RTCHitN_primID(args->hit, args->N, i);
+        const uint32_t face = (*context->triangle_face)[primitive];
+        bool keep = filter.face_enabled.empty() || (face < filter.face_enabled.size() && filter.face_enabled[face] != 0);
+        if (keep && filter.front_only) {
+            const glm::vec3 direction(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                                      RTCRayN_dir_z(args->ray, args->N, i));
+            keep = glm::dot((*context->triangle_normal)[primitive], direction) < 0.0f;
+        }
+        if (!keep)
+            args->valid[i] = 0;
+    }
+}
+
+FilterContext make_filter_context(const std::vector<uint32_t>& triangle_face,
+                                  const std::vector<glm::vec3>& triangle_normal, const MeshTracer::FaceFilter& filter)
+{
+    FilterContext context{};
+    rtcInitIntersectContext(&context.base);
+    context.base.filter = reject_filtered_hits;
+    context.triangle_face = &triangle_face;
+    context.triangle_normal = &triangle_normal;
+    context.filter = &filter;
+    return context;
+}
+
+RTCRayHit make_ray(const glm::vec3& origin, const glm::vec3& direction, float t_far)
+{
     RTCRayHit rh{};
     rh.ray.org_x = origin.x;
     rh.ray.org_y = origin.y;
@@ -85,15 +129,47 @@ MeshTracer::Hit MeshTracer::first_hit(const glm::vec3& origin, const glm::vec3& 
     rh.ray.mask = 0xFFFFFFFFu;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->scene, &context, &rh);
+    return rh;
+}
+
+} // namespace
+
+MeshTracer::Hit MeshTracer::Impl::intersect(RTCIntersectContext& context, const glm::vec3& origin,
+                                            const glm::vec3& direction, float t_far) const
+{
+    RTCRayHit rh = make_ray(origin, direction, t_far);
+    rtcIntersect1(scene, &context, &rh);
     Hit hit;
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.primID >= impl_->triangle_face.size())
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.primID >= triangle_face.size())
         return hit;
     hit.hit = true;
-    hit.face = impl_->triangle_face[rh.hit.primID];
+    hit.face = triangle_face[rh.hit.primID];
     hit.t = rh.ray.tfar;
-    hit.front = glm::dot(impl_->triangle_normal[rh.hit.primID], direction) < 0.0f;
+    hit.front = glm::dot(triangle_normal[rh.hit.primID], direction) < 0.0f;
     return hit;
+}
+
+MeshTracer::Hit MeshTracer::first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far) const
+{
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    return impl_->intersect(context, origin, direction, t_far);
+}
+
+MeshTracer::Hit MeshTracer::first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far,
+                                      const FaceFilter& filter) const
+{
+    FilterContext context = make_filter_context(impl_->triangle_face, impl_->triangle_normal, filter);
+    return impl_->intersect(context.base, origin, direction, t_far);
+}
+
+bool MeshTracer::occluded(const glm::vec3& origin, const glm::vec3& direction, float t_far,
+                          const FaceFilter& filter) const
+{
+    FilterContext context = make_filter_context(impl_->triangle_face, impl_->triangle_normal, filter);
+    RTCRay ray = make_ray(origin, direction, t_far).ray;
+    rtcOccluded1(impl_->scene, &context.base, &ray);
+    return ray.tfar < 0.0f; // Embree marks an occluded ray with tfar = -inf
 }
 
 bool MeshTracer::in_open_space(const glm::vec3& point, float clearance) const

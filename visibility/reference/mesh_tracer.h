@@ -8,6 +8,13 @@
 // open space (in_open_space) when rays along the six axes all meet a front face: from inside a
 // closed level every first hit is a front face; from the rock or void around it some ray meets a
 // back face or escapes. Thread-safe after construction (Embree's scene is read-only then).
+//
+// A FaceFilter narrows a query to what a picture shows: only the faces a renderer drew (a mask
+// over the mesh faces) and, with front_only, only triangles whose front faces the ray's origin
+// (a renderer with back-face culling draws nothing else). The inspector's depth-tested overlay
+// lines and its hover use it: "is this point of a line behind a wall of the picture", "which
+// face of the picture is under the mouse". Unfiltered queries do not pay for it (the filter is
+// Embree's per-query context filter, not a per-geometry one).
 #pragma once
 
 #include "visibility/zone.h"
@@ -15,6 +22,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <memory>
+#include <span>
 
 namespace pvs {
 
@@ -27,12 +35,21 @@ public:
         float t = 0.0f;
     };
 
+    struct FaceFilter {
+        std::span<const uint8_t> face_enabled; // per mesh face, non-zero = counts; empty = all count
+        bool front_only = false;
+    };
+
     explicit MeshTracer(const Zone& zone); // throws std::runtime_error when Embree fails
     ~MeshTracer();
     MeshTracer(const MeshTracer&) = delete;
     MeshTracer& operator=(const MeshTracer&) = delete;
 
     Hit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far) const;
+    Hit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far, const FaceFilter& filter) const;
+    // Whether any triangle the filter lets through lies on the ray within (0, t_far): cheaper
+    // than first_hit (Embree stops at the first one it finds).
+    bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_far, const FaceFilter& filter) const;
     // clearance: also no face nearer than this along the six axes (an eye that close to a wall
     // would see through it past the near plane).
     bool in_open_space(const glm::vec3& point, float clearance = 0.0f) const;
