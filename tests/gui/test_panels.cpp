@@ -116,6 +116,50 @@ TEST_F(NullBackend, ClickInTheViewportPicks)
     EXPECT_EQ(state.shown_region(), state.selection().region);
 }
 
+// Shift + click on a face opens the pair popup; its "Hide, both ways" hides the pair.
+TEST_F(NullBackend, ShiftClickInTheViewportEditsThePair)
+{
+    for (int i = 0; i < 2; ++i)
+        frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    const ImGuiWindow* viewport = ImGui::FindWindowByName("Viewport");
+    ASSERT_NE(viewport, nullptr);
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = viewport->ContentRegionRect.GetCenter();
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    io.KeyShift = true;
+    io.MouseDown[0] = true;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    io.MouseDown[0] = false;
+    io.KeyShift = false;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    const int32_t camera = state.last_cull().region, region = state.selection().region;
+    ASSERT_GE(camera, 0);
+    ASSERT_GE(region, 0);
+    ASSERT_TRUE(state.active_pvs()->visible(uint32_t(camera), uint32_t(region))) << "it was drawn";
+    ASSERT_EQ(ImGui::GetCurrentContext()->OpenPopupStack.Size, 1) << "the pair popup is open";
+    const ImGuiWindow* popup = ImGui::GetCurrentContext()->OpenPopupStack.back().Window;
+    ASSERT_NE(popup, nullptr);
+    // Click the popup's second item ("Hide, both ways"): below a text line, a separator (1 pixel)
+    // and the first item, each followed by the item spacing.
+    const float line = ImGui::GetTextLineHeight(), spacing = ImGui::GetStyle().ItemSpacing.y;
+    ImVec2 item = popup->DC.CursorStartPos;
+    item.x += 20.0f;
+    item.y += (line + spacing) + (1.0f + spacing) + (line + spacing) + line * 0.5f;
+    io.MousePos = item;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    io.MouseDown[0] = true;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    io.MouseDown[0] = false;
+    frame([&] { gui::draw_inspector(state, panels, 0.0f); });
+    ASSERT_EQ(state.pvs_source(), gui::PvsSource::Edited);
+    ASSERT_NE(state.pvs_editor(), nullptr);
+    EXPECT_EQ(state.pvs_editor()->edit_count(), 1u);
+    if (region != camera) {
+        EXPECT_FALSE(state.active_pvs()->visible(uint32_t(camera), uint32_t(region)));
+        EXPECT_FALSE(state.active_pvs()->visible(uint32_t(region), uint32_t(camera)));
+    }
+}
+
 TEST_F(NullBackend, RegionPanelListsTheRowAndColumnOfTheActivePvs)
 {
     for (int i = 0; i < 2; ++i)

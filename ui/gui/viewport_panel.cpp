@@ -148,6 +148,33 @@ void draw_hover(InspectorState& state, const ViewportPanel& panel, ImVec2 origin
                       double(hover->distance));
 }
 
+// Shift + left click on a face: edit the pair (the camera's region, the clicked face's region).
+constexpr const char* kPairPopup = "Edit PVS pair";
+
+void draw_pair_popup(InspectorState& state)
+{
+    if (!ImGui::BeginPopup(kPairPopup))
+        return;
+    const int32_t camera = state.last_cull().region, region = state.selection().region;
+    const Pvs* pvs = state.active_pvs();
+    if (camera < 0 || region < 0 || !pvs || uint32_t(camera) >= pvs->row_count() ||
+        uint32_t(region) >= pvs->region_count()) {
+        ImGui::TextDisabled("no PVS pair to edit here");
+        ImGui::EndPopup();
+        return;
+    }
+    const bool sees = pvs->visible(uint32_t(camera), uint32_t(region));
+    ImGui::Text("camera's region %d %s region %d", camera, sees ? "sees" : "does not see", region);
+    ImGui::Separator();
+    for (bool visible : {false, true})
+        for (bool both : {false, true}) {
+            const std::string label = std::string(visible ? "Show" : "Hide") + (both ? ", both ways" : ", one way");
+            if (ImGui::MenuItem(label.c_str()))
+                state.edit_pvs(pair_edit(uint32_t(camera), uint32_t(region), visible, both));
+        }
+    ImGui::EndPopup();
+}
+
 // Middle drag orbits about the picked point (the first drag aims the camera at it).
 void handle_orbit(InspectorState& state, ViewportPanel& panel)
 {
@@ -216,9 +243,11 @@ void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_s
         panel.looking = true;
     if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
         const float x = io.MousePos.x - origin.x, y = io.MousePos.y - origin.y;
-        if (x >= 0.0f && y >= 0.0f)
-            state.pick(uint32_t(x), uint32_t(y));
+        if (x >= 0.0f && y >= 0.0f && state.pick(uint32_t(x), uint32_t(y)) && io.KeyShift &&
+            state.selection().region >= 0 && state.last_cull().region >= 0)
+            ImGui::OpenPopup(kPairPopup);
     }
+    draw_pair_popup(state);
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Right))
         panel.looking = false;
     ImGui::End();
