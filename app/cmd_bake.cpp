@@ -444,6 +444,7 @@ MethodSettings method_settings(const BakeOptions& o)
     settings.samples = o.samples;
     settings.seed = o.seed;
     settings.raster_resolution = o.resolution;
+    settings.raster_engine = o.raster_engine == "rasteriser" ? RasterEngine::Rasteriser : RasterEngine::Rays;
     settings.raster_points = o.points;
     settings.raster_step = o.step;
     settings.raster_lattice = o.lattice == "hateengine" ? Lattice::HateEngine
@@ -661,6 +662,11 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_option("--seed", o->seed, "reference, raster: the sampling seed (the same seed gives the same PVS)")
         ->capture_default_str();
     cmd->add_option("--resolution", o->resolution, "raster: pixels per cube face side")->capture_default_str();
+    cmd->add_option("--engine", o->raster_engine,
+                    "raster: how the six views are drawn: rays (a ray per pixel centre, Embree packets; faster) "
+                    "or rasteriser (pvscope's CPU rasteriser; the same pixel centres)")
+        ->check(CLI::IsMember({"rays", "rasteriser"}))
+        ->capture_default_str();
     cmd->add_option("--points", o->points, "raster: sample points in each region, or in the open space of each grid "
                                            "cell (--lattice open)")
         ->capture_default_str();

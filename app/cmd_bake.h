@@ -58,6 +58,7 @@ struct BakeOptions {
     uint32_t points = 16;
     float step = 0.0f;
     std::string lattice = "open"; // grid cells: open (random points in open space), centred, hateengine
+    std::string raster_engine = "rays"; // rays (Embree packets) or rasteriser
     bool cull_back_faces = true;
     // OBJ levels: the view grid's cell in grid units (0: the .hepvs's grid, else 8) and the OBJ
     // units per grid unit; the input's .hepvs when not beside it.

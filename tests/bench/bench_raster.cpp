@@ -1,7 +1,8 @@
 // One point's six 90-degree views of the HateEngine E1M1 level (15 006 triangles), the unit of
 // work of the raster baker (visibility/raster/): pvscope's CPU rasteriser (CubeRaster::render)
 // against the baseline measured in the same run, Embree primary rays through the same pixel
-// centres (MeshTracer::first_hit, one ray at a time), at 32, 64 and 128 pixels a side. Points:
+// centres (MeshTracer::first_hit, one ray at a time; and MeshTracer::first_hits, packets of 8
+// rays), at 32, 64 and 128 pixels a side. Points:
 // the centres of E1M1.hepvs's cells that are in open space, every seventh cell (50 of them).
 // The time is for all the points (divide by the counter `points` for one point); counter
 // faces_seen: faces with a pixel, summed over the points (within a few percent of each other:
@@ -105,8 +106,49 @@ void BM_EmbreePrimaryRays(benchmark::State& state)
     state.counters["faces_seen"] = double(faces);
 }
 
+// The same rays in packets of 8 (MeshTracer::first_hits, rtcIntersect8), one view's rows at a time.
+void BM_EmbreePacketRays(benchmark::State& state)
+{
+    const Level* l = level();
+    if (!l) {
+        state.SkipWithError("needs ../shared/data/hateengine/E1M1.obj");
+        return;
+    }
+    const auto r = uint32_t(state.range(0));
+    std::vector<uint8_t> seen(l->zone.mesh.faces.size());
+    std::vector<glm::vec3> directions(size_t(r) * r);
+    std::vector<MeshTracer::Hit> hits(directions.size());
+    uint64_t faces = 0;
+    for (auto _ : state) {
+        faces = 0;
+        for (const glm::vec3& p : l->points) {
+            std::fill(seen.begin(), seen.end(), 0);
+            for (int view = 0; view < 6; ++view) {
+                const int axis = view / 2;
+                for (uint32_t y = 0; y < r; ++y)
+                    for (uint32_t x = 0; x < r; ++x) {
+                        glm::vec3& d = directions[size_t(y) * r + x];
+                        d = glm::vec3(0.0f);
+                        d[axis] = view % 2 ? -1.0f : 1.0f;
+                        d[(axis + 1) % 3] = 2.0f * (float(x) + 0.5f) / float(r) - 1.0f;
+                        d[(axis + 2) % 3] = 2.0f * (float(y) + 0.5f) / float(r) - 1.0f;
+                    }
+                l->tracer->first_hits(p, directions, 0.0f, std::numeric_limits<float>::infinity(), hits);
+                for (const MeshTracer::Hit& h : hits)
+                    if (h.hit && h.front)
+                        seen[h.face] = 1;
+            }
+            for (uint8_t s : seen)
+                faces += s;
+        }
+    }
+    state.counters["points"] = double(l->points.size());
+    state.counters["faces_seen"] = double(faces);
+}
+
 BENCHMARK(BM_CubeRaster)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EmbreePrimaryRays)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EmbreePacketRays)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
 
 } // namespace
 } // namespace pvs

@@ -219,6 +219,7 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     RasterParams params;
     params.raster.resolution = s.raster_resolution;
     params.raster.cull_back_faces = s.cull_back_faces;
+    params.engine = s.raster_engine;
     params.step = s.raster_step;
     params.lattice = s.raster_lattice;
     params.points_per_region = s.raster_points;
@@ -233,9 +234,10 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     run.cancelled = report.cancelled;
     run.peak_bytes_estimate = size_t(report.threads) * 7 * size_t(s.raster_resolution) * s.raster_resolution * 8 +
                               pvs.memory_bytes();
-    run.summary = format("raster: %s points in %s %s, %ux%u per cube face, mean %.1f visible, %.2f s on %u threads",
+    run.summary = format("raster: %s points in %s %s, %ux%u per cube face (%s), mean %.1f visible, %.2f s on %u threads",
                          std::to_string(report.points).c_str(), std::to_string(report.cells).c_str(),
                          zone.view_grid ? "grid cells" : "regions", s.raster_resolution, s.raster_resolution,
+                         s.raster_engine == RasterEngine::Rays ? "pixel rays" : "rasteriser",
                          report.mean_visible, report.seconds, report.threads);
     run.pvs = std::move(pvs);
     return run;

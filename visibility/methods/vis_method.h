@@ -66,6 +66,7 @@ struct MethodSettings {
     float raster_step = 0.0f;
     Lattice raster_lattice = Lattice::OpenRandom; // grid cells (raster_vis.h)
     bool cull_back_faces = true;
+    RasterEngine raster_engine = RasterEngine::Rays; // pixel rays (Embree packets) or the rasteriser
     std::function<bool(double fraction)> progress;
     std::function<void(const ReferenceRound& round, const Pvs& rows)> on_reference_round;
 };

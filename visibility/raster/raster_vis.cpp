@@ -1,5 +1,7 @@
 #include "visibility/raster/raster_vis.h"
 
+#include "visibility/raster/ray_cube.h"
+
 #include "visibility/bit_row.h"
 #include "visibility/eval/image_accuracy.h"
 #include "visibility/parallel_items.h"
@@ -12,15 +14,26 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace pvs {
 
 namespace {
 
+// One thread's renderer: the rasteriser, or pixel rays through the shared tracer.
 struct Worker {
-    CubeRaster raster;
+    std::optional<CubeRaster> raster;
+    std::optional<RayCube> rays;
     std::vector<uint8_t> seen; // per face
+
+    void render(const glm::vec3& eye)
+    {
+        if (rays)
+            rays->render(eye, seen);
+        else
+            raster->render(eye, seen);
+    }
 };
 
 // Bakes `cells` rows: points_of(cell, out) gives each cell's points in zone space.
@@ -36,14 +49,25 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     std::atomic<uint64_t> done{0}, points{0};
     std::atomic<bool> stop{false};
     const unsigned threads = params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::unique_ptr<MeshTracer> tracer; // shared by the threads' RayCubes (read-only)
+    if (params.engine == RasterEngine::Rays)
+        tracer = std::make_unique<MeshTracer>(zone);
     const bool finished = parallel_items(
         cells, threads, params.progress, [&] { return cells ? double(done.load()) / cells : 1.0; }, stop,
-        [&] { return Worker{CubeRaster(zone, params.raster), std::vector<uint8_t>(zone.mesh.faces.size(), 0)}; },
+        [&] {
+            Worker w;
+            if (tracer)
+                w.rays.emplace(*tracer, zone.mesh.faces.size(), params.raster);
+            else
+                w.raster.emplace(zone, params.raster);
+            w.seen.assign(zone.mesh.faces.size(), 0);
+            return w;
+        },
         [&](size_t cell, Worker& w) {
             std::fill(w.seen.begin(), w.seen.end(), 0);
             const std::vector<glm::vec3> eyes = points_of(uint32_t(cell));
             for (const glm::vec3& eye : eyes)
-                w.raster.render(eye, w.seen);
+                w.render(eye);
             const std::span<uint64_t> row(rows.data() + cell * words, words);
             for (uint32_t f = 0; f < w.seen.size(); ++f)
                 if (w.seen[f])

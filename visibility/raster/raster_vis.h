@@ -42,8 +42,14 @@ namespace pvs {
 // 804 (docs/performance.md).
 enum class Lattice : uint8_t { Centred, HateEngine, OpenRandom };
 
+// How a point's six views are drawn: pixel rays in Embree packets (ray_cube.h: faster on E1M1 at
+// every resolution measured, 32 to 128) or pvscope's rasteriser (cube_raster.h). The same pixel
+// centres; the faces seen differ only where a triangle edge crosses one.
+enum class RasterEngine : uint8_t { Rays, Rasteriser };
+
 struct RasterParams {
     CubeRasterOptions raster;
+    RasterEngine engine = RasterEngine::Rays;
     Lattice lattice = Lattice::OpenRandom;
     float step = 0.0f;               // grid cells: lattice step in grid units (HateEngine -s); 0 = centre only
     // Grid cells: keep only points in open space (mesh_tracer.h: inside the level, where a camera

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <stdexcept>
@@ -161,6 +162,50 @@ MeshTracer::Hit MeshTracer::first_hit(const glm::vec3& origin, const glm::vec3& 
 {
     FilterContext context = make_filter_context(impl_->triangle_face, impl_->triangle_normal, filter);
     return impl_->intersect(context.base, origin, direction, t_far);
+}
+
+void MeshTracer::first_hits(const glm::vec3& origin, std::span<const glm::vec3> directions, float t_near,
+                            float t_far, std::span<Hit> out, const FaceFilter* filter) const
+{
+    constexpr size_t kPacket = 8;
+    const FaceFilter all{};
+    FilterContext filtered = make_filter_context(impl_->triangle_face, impl_->triangle_normal, filter ? *filter : all);
+    RTCIntersectContext& context = filtered.base;
+    if (!filter)
+        context.filter = nullptr;
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (size_t first = 0; first < directions.size(); first += kPacket) {
+        const size_t count = std::min(kPacket, directions.size() - first);
+        alignas(32) int valid[kPacket];
+        alignas(32) RTCRayHit8 packet{};
+        for (size_t i = 0; i < kPacket; ++i) {
+            valid[i] = i < count ? -1 : 0;
+            const glm::vec3& d = directions[first + std::min(i, count - 1)];
+            packet.ray.org_x[i] = origin.x;
+            packet.ray.org_y[i] = origin.y;
+            packet.ray.org_z[i] = origin.z;
+            packet.ray.dir_x[i] = d.x;
+            packet.ray.dir_y[i] = d.y;
+            packet.ray.dir_z[i] = d.z;
+            packet.ray.tnear[i] = t_near;
+            packet.ray.tfar[i] = t_far;
+            packet.ray.mask[i] = 0xFFFFFFFFu;
+            packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+            packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect8(valid, impl_->scene, &context, &packet);
+        for (size_t i = 0; i < count; ++i) {
+            Hit& hit = out[first + i];
+            hit = {};
+            const unsigned primitive = packet.hit.primID[i];
+            if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID || primitive >= impl_->triangle_face.size())
+                continue;
+            hit.hit = true;
+            hit.face = impl_->triangle_face[primitive];
+            hit.t = packet.ray.tfar[i];
+            hit.front = glm::dot(impl_->triangle_normal[primitive], directions[first + i]) < 0.0f;
+        }
+    }
 }
 
 bool MeshTracer::occluded(const glm::vec3& origin, const glm::vec3& direction, float t_far,

@@ -47,6 +47,12 @@ public:
 
     Hit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far) const;
     Hit first_hit(const glm::vec3& origin, const glm::vec3& direction, float t_far, const FaceFilter& filter) const;
+    // first_hit for many rays from one origin (a camera's pixel rays), traced in packets of 8
+    // (Embree's rtcIntersect8): coherent rays share their walk down the hierarchy. out[i] is the
+    // hit of directions[i]; out must be as long as directions.
+    // With `filter`, only the triangles it lets through count (as first_hit with a filter).
+    void first_hits(const glm::vec3& origin, std::span<const glm::vec3> directions, float t_near, float t_far,
+                    std::span<Hit> out, const FaceFilter* filter = nullptr) const;
     // Whether any triangle the filter lets through lies on the ray within (0, t_far): cheaper
     // than first_hit (Embree stops at the first one it finds).
     bool occluded(const glm::vec3& origin, const glm::vec3& direction, float t_far, const FaceFilter& filter) const;
