@@ -12,6 +12,7 @@
 #include "tests/support/test_data.h"
 #include "visibility/raster/cube_raster.h"
 #include "visibility/raster/raster_vis.h"
+#include "visibility/raster/ray_cube.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "wld/zone_file.h"
 
@@ -106,7 +107,8 @@ void BM_EmbreePrimaryRays(benchmark::State& state)
     state.counters["faces_seen"] = double(faces);
 }
 
-// The same rays in packets of 8 (MeshTracer::first_hits, rtcIntersect8), one view's rows at a time.
+// The same rays in packets of 8 (RayCube: MeshTracer::first_hits, rtcIntersect8), what the raster
+// baker uses.
 void BM_EmbreePacketRays(benchmark::State& state)
 {
     const Level* l = level();
@@ -114,30 +116,14 @@ void BM_EmbreePacketRays(benchmark::State& state)
         state.SkipWithError("needs ../shared/data/hateengine/E1M1.obj");
         return;
     }
-    const auto r = uint32_t(state.range(0));
+    RayCube rays(*l->tracer, l->zone.mesh.faces.size(), {uint32_t(state.range(0)), true, 0.05f});
     std::vector<uint8_t> seen(l->zone.mesh.faces.size());
-    std::vector<glm::vec3> directions(size_t(r) * r);
-    std::vector<MeshTracer::Hit> hits(directions.size());
     uint64_t faces = 0;
     for (auto _ : state) {
         faces = 0;
         for (const glm::vec3& p : l->points) {
             std::fill(seen.begin(), seen.end(), 0);
-            for (int view = 0; view < 6; ++view) {
-                const int axis = view / 2;
-                for (uint32_t y = 0; y < r; ++y)
-                    for (uint32_t x = 0; x < r; ++x) {
-                        glm::vec3& d = directions[size_t(y) * r + x];
-                        d = glm::vec3(0.0f);
-                        d[axis] = view % 2 ? -1.0f : 1.0f;
-                        d[(axis + 1) % 3] = 2.0f * (float(x) + 0.5f) / float(r) - 1.0f;
-                        d[(axis + 2) % 3] = 2.0f * (float(y) + 0.5f) / float(r) - 1.0f;
-                    }
-                l->tracer->first_hits(p, directions, 0.0f, std::numeric_limits<float>::infinity(), hits);
-                for (const MeshTracer::Hit& h : hits)
-                    if (h.hit && h.front)
-                        seen[h.face] = 1;
-            }
+            rays.render(p, seen);
             for (uint8_t s : seen)
                 faces += s;
         }

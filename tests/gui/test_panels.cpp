@@ -215,7 +215,7 @@ TEST_F(NullBackend, BspTreeOpensTheCamerasPath)
     const std::vector<PathStep> before = state.camera_path();
     const Zone& zone = state.zone();
     for (uint32_t r = 0; r < zone.region_count(); ++r) { // the farthest region: another path
-        state.go_to_region(zone.region_count() - 1 - r);
+        state.go_to_region(uint32_t(zone.region_count()) - 1 - r);
         state.frame();
         if (state.camera_path().size() > 2 && state.camera_path().back().node != before.back().node)
             break;

@@ -88,6 +88,9 @@ struct BspPanel {
 };
 void draw_bsp_panel(InspectorState& state, BspPanel& panel);
 
+// "water, zone_line" for a set of RegionFlag bits, "none" for none (the Region panel, the hover).
+std::string flag_names(uint32_t flags);
+
 // ---- Bake: portal vis on a background thread, its progress, and the diff with the file's PVS ---
 struct BakePanel {
     BakeRequest request;

@@ -42,14 +42,6 @@ void update_lists(InspectorState& state, int32_t region, RegionPanel& panel)
         panel.neighbours = portal_neighbours(*state.ready_portals(), uint32_t(region));
 }
 
-std::string flag_names(uint32_t flags)
-{
-    std::string names;
-    for (uint32_t bit = 0; bit < kRegionFlagCount; ++bit)
-        if (flags & (1u << bit))
-            names += (names.empty() ? "" : ", ") + std::string(region_flag_name(1u << bit));
-    return names.empty() ? "none" : names;
-}
 
 // A clipped list of region ids; a click selects the region and goes there. `edited(r)` marks
 // the entries whose bit an edit set.
@@ -191,6 +183,15 @@ void draw_editing(InspectorState& state, RegionPanel& panel, int32_t region)
 }
 
 } // namespace
+
+std::string flag_names(uint32_t flags)
+{
+    std::string names;
+    for (uint32_t bit = 0; bit < kRegionFlagCount; ++bit)
+        if (flags & (1u << bit))
+            names += (names.empty() ? "" : ", ") + std::string(region_flag_name(1u << bit));
+    return names.empty() ? "none" : names;
+}
 
 void draw_region_panel(InspectorState& state, RegionPanel& panel)
 {

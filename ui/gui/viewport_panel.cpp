@@ -117,14 +117,6 @@ void draw_labels(const InspectorState& state, ImVec2 origin)
     }
 }
 
-std::string flag_list(uint32_t flags)
-{
-    std::string names;
-    for (uint32_t bit = 0; bit < kRegionFlagCount; ++bit)
-        if (flags & (1u << bit))
-            names += (names.empty() ? "" : ", ") + std::string(region_flag_name(1u << bit));
-    return names.empty() ? "no flags" : names;
-}
 
 // Hovering names the face under the mouse, its regions and their flags (a ray, not a render).
 void draw_hover(InspectorState& state, const ViewportPanel& panel, ImVec2 origin)
@@ -144,7 +136,7 @@ void draw_hover(InspectorState& state, const ViewportPanel& panel, ImVec2 origin
     if (hover->regions.size() > 4)
         regions += ", ... (" + std::to_string(hover->regions.size()) + ")";
     ImGui::SetTooltip("face %u  |  region %s  |  %s  |  %.0f units", hover->face,
-                      regions.empty() ? "none" : regions.c_str(), flag_list(hover->flags).c_str(),
+                      regions.empty() ? "none" : regions.c_str(), ("flags: " + flag_names(hover->flags)).c_str(),
                       double(hover->distance));
 }
 
