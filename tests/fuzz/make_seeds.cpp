@@ -231,6 +231,15 @@ void bsp_seeds(const std::string& bsp, const std::string& prt_path)
     zone_file_seeds(zone, stem);
 }
 
+// The map lumps read_doom_map reads (plus THINGS, which marks a map): the classic nodes and
+// the BLOCKMAP are left out of the seeds, where they would only make every input larger.
+bool is_read_map_lump(const std::string& name)
+{
+    static const std::set<std::string> names = {"THINGS", "LINEDEFS", "SIDEDEFS", "VERTEXES", "SECTORS", "REJECT",
+                                                "BEHAVIOR"};
+    return names.count(name) > 0;
+}
+
 bool is_map_lump(const std::string& name)
 {
     static const std::set<std::string> names = {"THINGS", "LINEDEFS", "SIDEDEFS", "VERTEXES", "SEGS", "SSECTORS",
@@ -257,7 +266,10 @@ void doom_map_seeds(const doom::WadFile& wad, const doom::WadFile* gl, const std
         while (map.source.map_marker + map_lumps < wad.lumps.size() &&
                is_map_lump(wad.lumps[map.source.map_marker + map_lumps].name))
             ++map_lumps;
-        std::vector<doom::WadLumpData> lumps = copy_lumps(wad, map.source.map_marker, map_lumps);
+        std::vector<doom::WadLumpData> lumps = copy_lumps(wad, map.source.map_marker, 1);
+        for (size_t i = 1; i < map_lumps; ++i)
+            if (is_read_map_lump(wad.lumps[map.source.map_marker + i].name))
+                lumps.push_back(copy_lumps(wad, map.source.map_marker + i, 1)[0]);
         const doom::WadFile& gl_file = map.source.gl_path == wad.path || !gl ? wad : *gl;
         size_t gl_lumps = 1; // GL_<name> or GL_LEVEL, then up to five GL_ lumps
         while (map.source.gl_marker + gl_lumps < gl_file.lumps.size() && gl_lumps < 6 &&

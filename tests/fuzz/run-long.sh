@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Long fuzz runs (docs/fuzzing.md records them): every target, or those named, for SECONDS each,
-# two at a time, each on its own growing corpus BUILD/long-corpus/<name> (seeded from
-# BUILD/corpora/<name>, make-corpora.sh) with its dictionary; logs in BUILD/fuzz-logs/<name>.log,
+# two at a time, each on its own growing corpus BUILD/long-corpus/<name> plus the seeds in
+# BUILD/corpora/<name> (make-corpora.sh), with its dictionary and max_len (target-options.sh); logs in BUILD/fuzz-logs/<name>.log,
 # crash inputs in BUILD/fuzz-artifacts/<name>/. Build the targets first (run-smoke.sh does).
 #   tests/fuzz/run-long.sh SECONDS [TARGET...]
 # PVSCOPE_FUZZ_BUILD_DIR (default build-fuzz), PVSCOPE_FUZZ_PARALLEL (default 2).
@@ -13,19 +13,20 @@ shift
 build=${PVSCOPE_FUZZ_BUILD_DIR:-build-fuzz}
 parallel=${PVSCOPE_FUZZ_PARALLEL:-2}
 targets=${*:-$(cat "$build/tests/fuzz/targets.txt")}
-. tests/fuzz/dicts.sh
+. tests/fuzz/target-options.sh
 
 run_one() {
     local target=$1 name=${1#fuzz_}
     local corpus=$build/long-corpus/$name
     mkdir -p "$corpus" "$build/fuzz-logs" "$build/fuzz-artifacts/$name"
-    [ -n "$(ls -A "$corpus")" ] || cp "$build/corpora/$name/"* "$corpus/" 2>/dev/null || true
     local dict=$build/fuzz-logs/$name.dict
     fuzz_dict_file "$target" "$dict"
     local dict_arg=()
     [ -s "$dict" ] && dict_arg=(-dict="$dict")
     nice -n 10 "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-        -print_final_stats=1 "${dict_arg[@]}" -artifact_prefix="$build/fuzz-artifacts/$name/" "$corpus" \
+        -max_len="$(fuzz_max_len_for "$target")" \
+        -print_final_stats=1 "${dict_arg[@]}" -artifact_prefix="$build/fuzz-artifacts/$name/" \
+        "$corpus" "$build/corpora/$name" \
         >"$build/fuzz-logs/$name.log" 2>&1 && echo "run-long: $target done" || echo "run-long: $target FINDING"
 }
 

@@ -24,7 +24,7 @@ cmake --build "$build" -j "$jobs"
 built=$(date +%s)
 tests/fuzz/make-corpora.sh "$build" "$build/corpora"
 
-. tests/fuzz/dicts.sh
+. tests/fuzz/target-options.sh
 
 targets=${PVSCOPE_FUZZ_TARGETS:-$(cat "$build/tests/fuzz/targets.txt")}
 scratch=$(mktemp -d)
@@ -40,6 +40,7 @@ for target in $targets; do
     [ -s "$dict" ] && dict_arg=(-dict="$dict")
     echo "run-smoke: $target for ${seconds}s on $(ls "$corpus" | wc -l) seeds"
     if ! "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+            -max_len="$(fuzz_max_len_for "$target")" \
             -print_final_stats=1 "${dict_arg[@]}" -artifact_prefix="$build/fuzz-artifacts/$name/" \
             "$scratch/$name" "$corpus" >"$scratch/$name.log" 2>&1; then
         tail -60 "$scratch/$name.log"
