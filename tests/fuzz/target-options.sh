@@ -22,12 +22,13 @@ fuzz_dict_file() {
 # The largest input libFuzzer makes (-max_len; longer seeds are cut to it). Without one it is
 # the largest seed: the real levels (e1m1.bsp 1.3 MB, E1M1.obj 0.8 MB) then make every
 # mutation parse a megabyte, at 10 executions a second instead of hundreds. The smaller seeds
-# (example.bsp, the generated zones, one Doom map) fit; the big ones still seed, cut short.
+# (example.bsp, the generated zones, the Doom maps) fit; the big ones still seed, cut short.
 fuzz_max_len_for() {
     case $1 in
         fuzz_obj | fuzz_wld) echo 65536 ;;
-        fuzz_bsp29 | fuzz_doom_map | fuzz_doom_textures | fuzz_hepvs) echo 131072 ;;
-        fuzz_roundtrip) echo 262144 ;;
+        fuzz_bsp29 | fuzz_doom_textures | fuzz_hepvs) echo 131072 ;;
+        # A WAD's directory is at its end: a cut WAD is garbage, so every Doom seed must fit.
+        fuzz_doom_map | fuzz_roundtrip) echo 262144 ;;
         *) echo 0 ;; # the largest seed
     esac
 }
