@@ -10,6 +10,9 @@ packages=(
   libirrlicht-dev libglfw3-dev libimgui-dev libsquish-dev libtinyobjloader-dev libembree-dev
   libgl-dev xvfb xauth libgl1-mesa-dri
   freedoom glbsp zdbsp
+  # The fuzz smoke (tests/fuzz/run-smoke.sh): clang 14 and its compiler-rt, which holds
+  # libFuzzer (libclang_rt.fuzzer-x86_64.a) and is only a recommendation of clang-14.
+  clang libclang-rt-14-dev
 )
 
 missing=()

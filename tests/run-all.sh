@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Builds pvscope with AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, then runs
-# every test (ctest). This is the README's test command and what .ci/run calls.
+# every test (ctest), then a smoke run of every libFuzzer target (tests/fuzz/run-smoke.sh: clang,
+# its own build folder, ~20 s a target; PVSCOPE_SKIP_FUZZ_SMOKE=1 leaves it out).
+# This is the README's test command and what .ci/run calls.
 # Tests that need ../shared/data skip with a message when it is absent; set
 # PVSCOPE_REQUIRE_SHARED_DATA=1 to make its absence a failure (CI does).
 set -euo pipefail
@@ -10,3 +12,6 @@ jobs=${PVSCOPE_JOBS:-$(nproc)}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVSCOPE_SANITIZE=ON -DPVSCOPE_WERROR=ON
 cmake --build "$build" -j "$jobs"
 ctest --test-dir "$build" --output-on-failure -j "$jobs"
+if [ "${PVSCOPE_SKIP_FUZZ_SMOKE:-0}" != 1 ]; then
+  PVSCOPE_JOBS=$jobs tests/fuzz/run-smoke.sh
+fi

@@ -13,6 +13,16 @@ constexpr const char* kFormat = "pvscope-pvs-edits";
 
 [[noreturn]] void bad(const std::string& file, const std::string& what) { throw FileError(file, 0, what); }
 
+// Whether doc[key] is the string `value` / the non-negative integer `value`.
+bool has_string(const nlohmann::json& doc, const char* key, const char* value)
+{
+    return doc.contains(key) && doc[key].is_string() && doc[key].get<std::string>() == value;
+}
+bool has_unsigned(const nlohmann::json& doc, const char* key, uint64_t value)
+{
+    return doc.contains(key) && doc[key].is_number_unsigned() && doc[key].get<uint64_t>() == value;
+}
+
 uint32_t index_field(const nlohmann::json& edit, const char* key, uint32_t limit, const std::string& file,
                      const std::string& where)
 {
@@ -89,12 +99,16 @@ std::vector<PvsEdit> parse_edit_list(const std::string& text, const std::string&
         doc = nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         throw FileError(file, e.byte > 0 ? e.byte - 1 : 0, std::string("not JSON: ") + e.what());
+    } catch (const nlohmann::json::exception& e) { // a number too large for a double ("1e400")
+        throw FileError(file, 0, std::string("not JSON: ") + e.what());
     }
-    if (!doc.is_object() || doc.value("format", "") != kFormat)
+    // Field types are checked before any get<>(): nlohmann::json throws type_error for a
+    // value of another type, which would escape as something other than FileError.
+    if (!doc.is_object() || !has_string(doc, "format", kFormat))
         bad(file, std::string("not a PVS edit list (\"format\": \"") + kFormat + "\" expected)");
-    if (doc.value("version", 0) != 1)
+    if (!has_unsigned(doc, "version", 1))
         bad(file, "edit list version " + doc.value("version", nlohmann::json(0)).dump() + " (1 expected)");
-    if (doc.value("rows", 0u) != rows || doc.value("regions", 0u) != regions)
+    if (!has_unsigned(doc, "rows", rows) || !has_unsigned(doc, "regions", regions))
         bad(file, "edit list made for " + doc.value("rows", nlohmann::json(0)).dump() + " rows x " +
                       doc.value("regions", nlohmann::json(0)).dump() + " regions, this zone has " +
                       std::to_string(rows) + " x " + std::to_string(regions) + " (another zone?)");

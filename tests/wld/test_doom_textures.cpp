@@ -335,6 +335,22 @@ TEST(DoomTextures, TinyWadFlatsComeFromTheMarkerRangesThroughTheFirstPalette)
     EXPECT_FALSE(textures.flat("TEXA"));
 }
 
+TEST(DoomTextures, NamesListEveryFlatAndWallTextureSortedUpperCase)
+{
+    const WadFile wad = make_wad(tiny_lumps());
+    const DoomTextures textures(wad);
+    const std::vector<std::string> walls = textures.wall_names();
+    const std::vector<std::string> flats = textures.flat_names();
+    EXPECT_TRUE(std::is_sorted(walls.begin(), walls.end()));
+    EXPECT_TRUE(std::is_sorted(flats.begin(), flats.end()));
+    for (const char* name : {"TEXA", "TEXC", "TALLTEX", "TEX2ONLY"})
+        EXPECT_NE(std::find(walls.begin(), walls.end(), name), walls.end()) << name;
+    for (const char* name : {"FLAT1", "FLAT2", "FLAT4", "FLATBAD"}) // FLATBAD: listed, does not decode
+        EXPECT_NE(std::find(flats.begin(), flats.end(), name), flats.end()) << name;
+    EXPECT_EQ(std::find(flats.begin(), flats.end(), "OUTSIDE"), flats.end());
+    EXPECT_EQ(std::find(flats.begin(), flats.end(), "F1_START"), flats.end());
+}
+
 TEST(DoomTextures, MissingLumpsMeanNoTexturesNotAnError)
 {
     std::vector<WadLumpData> lumps = tiny_lumps();

@@ -290,4 +290,22 @@ std::optional<DoomImage> DoomTextures::wall(const std::string& name) const
                       [&] { return compose(wad_, record.lump, record.offset, palette_, patches_); });
 }
 
+namespace {
+
+template <class Map>
+std::vector<std::string> sorted_keys(const Map& map)
+{
+    std::vector<std::string> names;
+    names.reserve(map.size());
+    for (const auto& entry : map)
+        names.push_back(entry.first);
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+} // namespace
+
+std::vector<std::string> DoomTextures::flat_names() const { return sorted_keys(flats_); }
+std::vector<std::string> DoomTextures::wall_names() const { return sorted_keys(textures_); }
+
 } // namespace pvs::doom

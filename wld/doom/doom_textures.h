@@ -70,6 +70,10 @@ public:
     // no such texture or no palette. Throws FileError when its record or a patch is corrupt.
     std::optional<DoomImage> wall(const std::string& name) const;
 
+    // The names flat() and wall() know (upper case, sorted), whether or not they decode.
+    std::vector<std::string> flat_names() const;
+    std::vector<std::string> wall_names() const;
+
 private:
     struct TextureRecord {
         size_t lump = 0;     // TEXTURE1 or TEXTURE2

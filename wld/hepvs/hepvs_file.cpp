@@ -46,7 +46,15 @@ uint64_t read_names(const ByteReader& in, uint64_t at, uint16_t count, HepvsFile
 
 uint64_t read_cells(const ByteReader& in, uint64_t at, HepvsFile& out)
 {
+    // Every cell takes at least its 2-byte count: a header declaring more cells than the bytes
+    // left could hold is refused before anything is reserved for them (65535^3 cells would ask
+    // for terabytes).
     const uint64_t cells = out.cell_count();
+    const uint64_t left = at <= in.size() ? in.size() - at : 0;
+    if (cells > left / 2)
+        in.fail(20, std::to_string(out.counts.x) + " x " + std::to_string(out.counts.y) + " x " +
+                        std::to_string(out.counts.z) + " cells need at least " + std::to_string(2 * cells) +
+                        " bytes, " + std::to_string(left) + " left after the names");
     out.cell_offsets.reserve(cells + 1);
     out.cell_offsets.push_back(0);
     for (uint64_t c = 0; c < cells; ++c) {

@@ -7,7 +7,9 @@
 // Reading follows the spec's loader policy (§5.7): the 28-byte header (never a 20-byte guess),
 // version >= 1 (other than 1 is noted in `warnings`), counts >= 1, a positive finite cell size,
 // names and cells bounds-checked, every index below the object count, and nothing after the
-// last cell. Any failure throws FileError naming the file, the byte offset and the problem.
+// last cell. Any failure throws FileError naming the file, the byte offset and the problem. A
+// header declaring more cells than the bytes after the names could hold (2 bytes each at least)
+// is refused at offset 20 before anything is allocated for them.
 // Cells keep their indices in file order (the baker's colour-ID order), so write(read(f)) == f.
 #pragma once
 
