@@ -58,20 +58,51 @@ WRef FlowWorker::clip_to_frame_separators(WRef w, Frame& f, const Frame& prev, c
     return w;
 }
 
-bool FlowWorker::run(uint32_t pi, uint32_t rank, const uint64_t* head_mightsee, const PruneRows& prune_rows,
+bool FlowWorker::adds_leaf(const Frame& prev, const RunRow& test, uint32_t first_run, uint32_t lo, uint32_t hi,
+                           const uint64_t* passage) const
+{
+    for (uint32_t i = first_run; i < test.runs() && test.start(i) < hi; ++i) {
+        const uint32_t start = test.start(i), end = std::min(hi, test.end(i));
+        const uint64_t* t = test.words(i);
+        for (uint32_t w = std::max(lo, start); w < end; ++w)
+            if ((prev.mightsee[w] & t[w - start] & passage[w - lo] & ~vis_[w]) != 0)
+                return true;
+    }
+    return false;
+}
+
+void FlowWorker::narrow_mightsee_into(Frame& f, const Frame& prev, const RunRow& test, uint32_t first_run,
+                                      uint32_t lo, uint32_t hi, const uint64_t* passage)
+{
+    uint32_t w = std::max(lo, test.start(first_run));
+    f.lo = w;
+    for (uint32_t i = first_run; i < test.runs() && test.start(i) < hi; ++i) {
+        const uint32_t start = test.start(i), end = std::min(hi, test.end(i));
+        const uint64_t* t = test.words(i);
+        for (; w < start; ++w)
+            f.mightsee[w] = 0; // between two runs
+        for (; w < end; ++w)
+            f.mightsee[w] = prev.mightsee[w] & t[w - start] & passage[w - lo];
+    }
+    f.hi = w;
+}
+
+bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
                      const std::atomic<bool>& cancel)
 {
     const DirectedPortal& p = g_.portals[pi];
-    const size_t words = g_.words;
     std::fill(vis_.begin(), vis_.end(), 0);
 
     Frame& head = frame(0);
     head.source = portal_winding(pi);
     head.pass = {};
     head.portalplane = p.plane;
-    std::copy(head_mightsee, head_mightsee + words, head.mightsee.begin());
-    head.lo = 0;
-    head.hi = uint32_t(words);
+    // Dense while the walk reads it, written over the words its runs span only.
+    const uint32_t runs = head_mightsee.runs();
+    head.lo = runs == 0 ? 0 : head_mightsee.start(0);
+    head.hi = runs == 0 ? 0 : head_mightsee.end(runs - 1);
+    std::fill(head.mightsee.begin() + head.lo, head.mightsee.begin() + head.hi, 0);
+    head_mightsee.or_into(head.mightsee.data());
     depth_ = 0;
     enter(p.leaf, pi);
 
@@ -115,24 +146,15 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const uint64_t* head_mightsee, 
             hi = std::min(hi, row.hi);
             passage = row.words + (lo - row.lo);
         }
-        const uint64_t* test = prune_rows.row(qi, rank, wait_nanos_);
-        if (test == nullptr) {
+        const RunRow test = prune_rows.row(qi, rank, wait_nanos_);
+        if (!test) {
             cancelled = true;
             break;
         }
-        {
-            uint32_t w = lo;
-            while (w < hi && (prev.mightsee[w] & test[w] & passage[w - lo] & ~vis_[w]) == 0)
-                ++w;
-            if (w >= hi)
-                continue;
-        }
-        const auto narrow = [&] {
-            for (uint32_t w = lo; w < hi; ++w)
-                f.mightsee[w] = prev.mightsee[w] & test[w] & passage[w - lo];
-            f.lo = lo;
-            f.hi = hi;
-        };
+        const uint32_t first_run = test.first_run_after(lo);
+        if (!adds_leaf(prev, test, first_run, lo, hi, passage))
+            continue;
+        const auto narrow = [&] { narrow_mightsee_into(f, prev, test, first_run, lo, hi, passage); };
 
         // The part of the target in front of the source portal.
         WRef pass = clip(portal_winding(qi), head.portalplane, f);

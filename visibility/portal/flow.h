@@ -15,6 +15,7 @@
 #include "visibility/portal/flow_order.h"
 #include "visibility/portal/passages.h"
 #include "visibility/portal/portal_graph.h"
+#include "visibility/portal/run_rows.h"
 
 #include <algorithm>
 #include <atomic>
@@ -40,7 +41,7 @@ public:
     // The flow of directed portal pi of rank `rank`, into vis(). prune_rows gives the set each
     // portal q may still reach (its visbits or its mightsee), or nullptr when the bake is
     // cancelled. Returns false when cancelled.
-    bool run(uint32_t pi, uint32_t rank, const uint64_t* head_mightsee, const PruneRows& prune_rows,
+    bool run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
              const std::atomic<bool>& cancel);
 
     std::span<const uint64_t> vis() const { return vis_; }
@@ -50,7 +51,8 @@ public:
     size_t target_check_prunes() const { return target_check_prunes_; }
     // The passage row of directed portal ai and the k-th portal leaving its destination
     // (passages.cpp), into `out` (g.words words).
-    void passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t>& mightsee, uint64_t* out);
+    // ma, mb: the mightsee rows of ai and of that portal, dense.
+    void passage_row(uint32_t ai, uint32_t k, const uint64_t* ma, const uint64_t* mb, uint64_t* out);
     size_t leaf_recursions() const { return leaf_recursions_; }
     uint64_t wait_nanos() const { return wait_nanos_; } // waiting for older portals' visbits
     size_t bytes() const
@@ -82,6 +84,16 @@ private:
     {
         return clip_winding(in, split, f, dists_.data(), sides_.data());
     }
+
+    // "Nothing new": whether prev.mightsee & test & passage has a bit not in vis_. test is zero
+    // outside its runs, so only its runs from first_run on inside [lo, hi) are read; passage is
+    // indexed from lo.
+    bool adds_leaf(const Frame& prev, const RunRow& test, uint32_t first_run, uint32_t lo, uint32_t hi,
+                   const uint64_t* passage) const;
+    // f.mightsee = prev.mightsee & test & passage, written (and f.lo, f.hi set) over the words
+    // of those runs only: every other word of the row is zero.
+    static void narrow_mightsee_into(Frame& f, const Frame& prev, const RunRow& test, uint32_t first_run, uint32_t lo,
+                                     uint32_t hi, const uint64_t* passage);
 
     // Enters `leaf` below the frame at depth_ (false when it is already on the chain).
     bool enter(uint32_t leaf, uint32_t entry);

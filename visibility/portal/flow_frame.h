@@ -53,7 +53,7 @@ struct Frame {
     uint32_t cursor = 0, end = 0; // the leaf's outgoing portals still to try
     WRef source, pass;            // for the child frame: what is left of the source, the pass
     DPlane portalplane;           // for the child frame: the plane of the portal it came through
-    std::vector<uint64_t> mightsee; // for the child frame; zero outside words [lo, hi)
+    std::vector<uint64_t> mightsee; // for the child frame; words outside [lo, hi) are zero (never read)
     uint32_t lo = 0, hi = 0;
     bool slot_used[kStackWindings] = {};
     SeparatorCache separators[2];

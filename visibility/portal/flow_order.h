@@ -3,13 +3,14 @@
 // Contract. rank_portals orders the directed portals by increasing nummightsee, ties by index:
 // the order they are handed to the threads in. PruneRows::row(q, r) is the row the flow of the
 // portal of rank r prunes with at q: q's finished visbits when rank(q) + kPruneLag < r (waiting
-// for q when it is still being worked on), else q's mightsee; nullptr when q was aborted
+// for q when it is still being worked on), else q's mightsee; an empty row when q was aborted
 // (cancelled bake). The rule depends on ranks only, never on timing, so the result does not
 // depend on the thread count. It cannot deadlock: q was handed out earlier than the waiter, and
 // q itself only waits for lower ranks.
 #pragma once
 
 #include "visibility/portal/portal_vis.h"
+#include "visibility/portal/run_rows.h"
 
 #include <atomic>
 #include <chrono>
@@ -32,18 +33,18 @@ FlowOrder rank_portals(const std::vector<uint32_t>& nummightsee);
 
 class PruneRows {
 public:
-    PruneRows(const uint32_t* rank, std::atomic<uint8_t>* state, const uint64_t* mightsee,
-              const uint64_t* visbits, size_t words)
-        : rank_(rank), state_(state), mightsee_(mightsee), visbits_(visbits), words_(words)
+    // visbits[q] is read only once state[q] is kDone (written before the release store).
+    PruneRows(const uint32_t* rank, std::atomic<uint8_t>* state, const RunRow* mightsee, const RunRow* visbits)
+        : rank_(rank), state_(state), mightsee_(mightsee), visbits_(visbits)
     {
     }
 
     // The row the portal of rank r prunes with at directed portal qi; waiting time is added to
     // waited_nanos. Inline: called once per flow step.
-    const uint64_t* row(uint32_t qi, uint32_t r, uint64_t& waited_nanos) const
+    RunRow row(uint32_t qi, uint32_t r, uint64_t& waited_nanos) const
     {
         if (rank_[qi] + kPruneLag >= r)
-            return mightsee_ + size_t{qi} * words_;
+            return mightsee_[qi];
         uint8_t s = state_[qi].load(std::memory_order_acquire);
         if (s < kDone) {
             using Clock = std::chrono::steady_clock;
@@ -53,15 +54,14 @@ public:
             waited_nanos +=
                 uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - wait_start).count());
         }
-        return s == kDone ? visbits_ + size_t{qi} * words_ : nullptr;
+        return s == kDone ? visbits_[qi] : RunRow{};
     }
 
 private:
     const uint32_t* rank_;
     std::atomic<uint8_t>* state_;
-    const uint64_t* mightsee_;
-    const uint64_t* visbits_;
-    size_t words_;
+    const RunRow* mightsee_;
+    const RunRow* visbits_;
 };
 
 } // namespace pvs::portal_vis

@@ -8,15 +8,14 @@
 #include "visibility/portal/vis_threads.h"
 
 #include <algorithm>
-#include <mutex>
 #include <span>
 
 namespace pvs::portal_vis {
 
-void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<uint64_t>& mightsee)
+void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<RunRow>& mightsee, RowPool& pool)
 {
     const size_t words = g.words;
-    std::vector<uint64_t> reach(words);
+    std::vector<uint64_t> reach(words), might(words), encoded;
     for (uint32_t a = 0; a < uint32_t(g.portals.size()); ++a) {
         std::fill(reach.begin(), reach.end(), 0);
         bits::set(reach, g.portals[a].leaf);
@@ -25,15 +24,18 @@ void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<uint6
             for (size_t w = row.lo; w < row.hi; ++w)
                 reach[w] |= row.words[w - row.lo];
         }
-        uint64_t* might = &mightsee[size_t{a} * words];
+        std::fill(might.begin(), might.end(), 0);
+        mightsee[a].or_into(might.data());
         for (size_t w = 0; w < words; ++w)
             might[w] &= reach[w];
+        encode_runs(might, encoded);
+        mightsee[a] = pool.append(encoded);
     }
 }
 
 // A row: a flood from b's leaf through the portals that survive a's plane, b's plane and the
 // separators between a and b (b clipped to the front of a), within a.mightsee & b.mightsee.
-void FlowWorker::passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t>& mightsee, uint64_t* out)
+void FlowWorker::passage_row(uint32_t ai, uint32_t k, const uint64_t* ma, const uint64_t* mb, uint64_t* out)
 {
     const size_t words = g_.words;
     std::fill(out, out + words, 0);
@@ -62,8 +64,6 @@ void FlowWorker::passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t
         for_each_separator(aw, a.plane, bw, false, b_side_.data(), keep);
     if (level_ > 1) // test 1: b -> a, mirrored
         for_each_separator(bw, b.plane, aw, true, b_side_.data(), keep);
-    const uint64_t* ma = &mightsee[size_t(ai) * words];
-    const uint64_t* mb = &mightsee[size_t(bi) * words];
     // Flood from b's leaf through the portals a line through a and b can cross.
     std::vector<uint32_t>& stack = passage_stack_;
     stack.clear();
@@ -110,8 +110,8 @@ void FlowWorker::passage_row(uint32_t ai, uint32_t k, const std::vector<uint64_t
     }
 }
 
-bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, size_t budget, unsigned threads,
-                    std::atomic<bool>& cancel, std::atomic<bool>& user_cancel,
+bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, RowPool& narrowed, size_t budget,
+                    unsigned threads, std::atomic<bool>& cancel, std::atomic<bool>& user_cancel,
                     const std::function<bool(double)>& progress, Passages& out)
 {
     const auto n = uint32_t(g.portals.size());
@@ -129,30 +129,37 @@ bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, 
         return false;
     }
     out.start.assign(pairs, 0);
-    // (uint32_t indices into `words`)
+    out.block.assign(n, nullptr);
+    out.pools.resize(threads);
+    // (the per-portal block pointers are not counted: the decision stays what it was when the
+    // rows were one array)
     const size_t word_budget = std::min<size_t>((budget - fixed_bytes) / sizeof(uint64_t), UINT32_MAX);
     std::atomic<size_t> total_words{0};
     std::atomic<bool> over_budget{false};
-    std::mutex words_mutex;
     std::atomic<uint32_t> next_portal{0}, portals_done{0};
     run_parallel(
         threads,
-        [&](unsigned) {
+        [&](unsigned t) {
             FlowWorker worker(g, level);
-            std::vector<uint64_t> dense(g.words), packed;
+            std::vector<uint64_t> dense(g.words), packed, ma(g.words), mb(g.words);
             while (!cancel.load(std::memory_order_relaxed) && !over_budget.load(std::memory_order_relaxed)) {
                 const uint32_t a = next_portal.fetch_add(1);
                 if (a >= n)
                     break;
                 packed.clear();
+                std::fill(ma.begin(), ma.end(), 0);
+                mightsee[a].or_into(ma.data());
+                const uint32_t dest = g.portals[a].leaf;
                 for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k) {
-                    worker.passage_row(a, uint32_t(k), mightsee, dense.data());
+                    std::fill(mb.begin(), mb.end(), 0);
+                    mightsee[g.leaf_portals[g.leaf_first[dest] + k]].or_into(mb.data());
+                    worker.passage_row(a, uint32_t(k), ma.data(), mb.data(), dense.data());
                     uint32_t lo = 0, hi = uint32_t(g.words);
                     while (lo < hi && dense[lo] == 0)
                         ++lo;
                     while (hi > lo && dense[hi - 1] == 0)
                         --hi;
-                    out.start[out.first[a] + k] = uint32_t(packed.size()); // made absolute below
+                    out.start[out.first[a] + k] = uint32_t(packed.size());
                     packed.push_back(uint64_t{lo} | uint64_t{hi} << 32);
                     packed.insert(packed.end(), dense.begin() + lo, dense.begin() + hi);
                 }
@@ -160,14 +167,7 @@ bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, 
                     over_budget.store(true);
                     break;
                 }
-                size_t base = 0;
-                {
-                    std::lock_guard lock(words_mutex);
-                    base = out.words.size();
-                    out.words.insert(out.words.end(), packed.begin(), packed.end());
-                }
-                for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k)
-                    out.start[out.first[a] + k] += uint32_t(base);
+                out.block[a] = out.pools[t].append_words(packed);
                 portals_done.fetch_add(1, std::memory_order_relaxed);
             }
         },
@@ -177,7 +177,7 @@ bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, 
         out = {};
         return false;
     }
-    narrow_mightsee(g, out, mightsee);
+    narrow_mightsee(g, out, mightsee, narrowed);
     return true;
 }
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "visibility/portal/portal_graph.h"
+#include "visibility/portal/run_rows.h"
 
 #include <atomic>
 #include <cstddef>
@@ -21,6 +22,7 @@
 
 namespace pvs::portal_vis {
 
+// A pair's row: for directed portal a and the k-th portal b leaving a's
 // destination, the leaves a line through a and then b can reach. A row keeps only its words
 // [lo, hi) (the others are zero): such a line reaches a few nearby leaves, and BSP leaf numbers
 // follow the tree, so on e1m1 a row spans 5 of 19 words.
@@ -37,30 +39,39 @@ struct PassageRow {
     }
 };
 
+// The rows of a portal's pairs lie one after another in a block of a pool that never moves
+// (built in parallel, they are never copied into one growing array: that copy was a peak).
 struct Passages {
-    std::vector<size_t> first;   // n + 1 offsets: a's pairs are [first[a], first[a + 1])
-    std::vector<uint32_t> start; // per pair: the index of its header in `words`
-    std::vector<uint64_t> words;
+    std::vector<size_t> first;          // n + 1 offsets: a's pairs are [first[a], first[a + 1])
+    std::vector<const uint64_t*> block; // per portal: its pairs' rows
+    std::vector<uint32_t> start;        // per pair: the index of its header in its portal's block
+    std::vector<RowPool> pools;         // one per builder thread
 
     PassageRow row(uint32_t a, size_t k) const
     {
-        const uint64_t* header = &words[start[first[a] + k]];
+        const uint64_t* header = block[a] + start[first[a] + k];
         return {uint32_t(*header), uint32_t(*header >> 32), header + 1};
     }
     size_t pairs() const { return start.size(); }
     size_t bytes() const
     {
-        return first.capacity() * sizeof(size_t) + start.capacity() * sizeof(uint32_t) +
-               words.capacity() * sizeof(uint64_t);
+        size_t pooled = 0;
+        for (const RowPool& pool : pools)
+            pooled += pool.bytes();
+        return first.capacity() * sizeof(size_t) + block.capacity() * sizeof(uint64_t*) +
+               start.capacity() * sizeof(uint32_t) + pooled;
     }
 };
 
-// Every portal a's mightsee narrowed to its destination plus what its passages reach: a line
-// from a into a leaf beyond its destination leaves the destination through some portal b.
-void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<uint64_t>& mightsee);
+// Every portal a's mightsee narrowed to its destination plus what its passages reach (a line
+// from a into a leaf beyond its destination leaves the destination through some portal b):
+// each row replaced by its narrowed copy, stored in `pool`.
+void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<RunRow>& mightsee, RowPool& pool);
 
-bool build_passages(const Graph& g, int level, std::vector<uint64_t>& mightsee, size_t budget, unsigned threads,
-                    std::atomic<bool>& cancel, std::atomic<bool>& user_cancel,
+// mightsee: every directed portal's row. On success it is narrowed, its new rows in `narrowed`
+// (the old rows are no longer referenced).
+bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, RowPool& narrowed, size_t budget,
+                    unsigned threads, std::atomic<bool>& cancel, std::atomic<bool>& user_cancel,
                     const std::function<bool(double)>& progress, Passages& out);
 
 } // namespace pvs::portal_vis

@@ -30,6 +30,13 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
     Graph g;
     g.leaf_count = region_count;
     g.words = bits::words_for(region_count);
+    // At most two directed portals per input portal and two copies of its points: reserved so
+    // that growing the arrays never holds an old and a new copy at once.
+    g.portals.reserve(2 * set.portals.size());
+    size_t point_total = 0;
+    for (const Portal& in : set.portals)
+        point_total += in.point_count;
+    g.points.reserve(std::min(2 * point_total, 2 * set.points.size()));
     std::vector<Vec> pts;
     for (const Portal& in : set.portals) {
         const bool regions_ok = in.regions[0] >= 0 && in.regions[1] >= 0 &&

@@ -1,6 +1,7 @@
 // The portal-vis baker (portal_vis.h for the method, the determinism rule and the limits): the
 // phases of a bake and the bake's shared state. One concept per file beside it:
 //   portal_graph  directed portals, points, portals per region (input)
+//   run_rows      finished bit rows kept as runs of nonzero words
 //   base_vis      each directed portal's mightsee (Method::Fast's rows)
 //   passages      rows of the leaves a line through two portals can reach; mightsee narrowed
 //   flow_order    the ranking and the rows a flow prunes with (determinism)
@@ -15,6 +16,7 @@
 #include "visibility/portal/flow_order.h"
 #include "visibility/portal/passages.h"
 #include "visibility/portal/portal_graph.h"
+#include "visibility/portal/run_rows.h"
 #include "visibility/portal/vis_threads.h"
 
 #include <algorithm>
@@ -30,30 +32,42 @@ namespace {
 using namespace portal_vis;
 using Clock = std::chrono::steady_clock;
 
-// What the phases of one bake share: the graph, the rows and each portal's state.
+// What the phases of one bake share: the graph, the rows and each portal's state. Rows are
+// dense only while a worker builds them; finished, they are kept as runs (run_rows.h) in pools
+// of the thread that made them.
 struct Bake {
     const Graph& g;
     const VisParams& params;
     int level = 4;
     uint32_t n = 0;             // directed portals
     unsigned threads = 1;
-    std::vector<uint64_t> mightsee; // n rows of g.words words
+    std::vector<RunRow> mightsee; // per directed portal
     std::vector<uint32_t> nummightsee;
-    std::vector<uint64_t> visbits;  // Full only
+    std::vector<RunRow> visbits;  // Full only; visbits[i] is set before state[i] becomes kDone
+    std::vector<RowPool> might_pools, vis_pools; // per thread
     std::unique_ptr<std::atomic<uint8_t>[]> state;
     std::atomic<bool> cancel{false}, user_cancel{false};
     size_t worker_bytes = 0; // summed by the flow's workers under worker_bytes_mutex
     std::mutex worker_bytes_mutex;
     size_t passage_row_bytes = 0;
+    size_t narrowing_row_bytes = 0; // base rows and their narrowed copies, both held for a moment
 
     Bake(const Graph& graph, const VisParams& p, int lvl, unsigned thread_count)
         : g(graph), params(p), level(lvl), n(uint32_t(graph.portals.size())), threads(thread_count),
-          mightsee(size_t{n} * graph.words, 0), nummightsee(n, 0), state(new std::atomic<uint8_t>[n])
+          mightsee(n), nummightsee(n, 0), might_pools(thread_count), state(new std::atomic<uint8_t>[n])
     {
         for (uint32_t i = 0; i < n; ++i)
             state[i].store(kNone, std::memory_order_relaxed);
     }
-    uint64_t* mightsee_row(uint32_t i) { return &mightsee[size_t{i} * g.words]; }
+    size_t row_bytes() const
+    {
+        size_t bytes = (mightsee.capacity() + visbits.capacity()) * sizeof(RunRow);
+        for (const RowPool& pool : might_pools)
+            bytes += pool.bytes();
+        for (const RowPool& pool : vis_pools)
+            bytes += pool.bytes();
+        return bytes;
+    }
 };
 
 // Base vis: every directed portal on its own. False when cancelled.
@@ -62,14 +76,17 @@ bool run_base_vis(Bake& b, bool full)
     std::atomic<uint32_t> next{0}, done{0};
     run_parallel(
         b.threads,
-        [&](unsigned) {
+        [&](unsigned t) {
             std::vector<uint32_t> stack;
             stack.reserve(b.g.leaf_count);
+            std::vector<uint64_t> dense(b.g.words), encoded;
             while (!b.cancel.load(std::memory_order_relaxed)) {
                 const uint32_t i = next.fetch_add(1);
                 if (i >= b.n)
                     break;
-                b.nummightsee[i] = base_portal_vis(b.g, i, stack, b.mightsee_row(i));
+                b.nummightsee[i] = base_portal_vis(b.g, i, stack, dense.data());
+                encode_runs(dense, encoded);
+                b.mightsee[i] = b.might_pools[t].append(encoded);
                 done.fetch_add(1, std::memory_order_relaxed);
             }
         },
@@ -87,14 +104,15 @@ struct FlowTotals {
 
 // One worker of the flow: portals in rank order from `next` until none is left or the bake is
 // cancelled; each finished portal's visbits are published through its state.
-void flow_worker(Bake& b, const FlowOrder& order, const Passages* passages, std::atomic<uint32_t>& next,
+void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* passages, std::atomic<uint32_t>& next,
                  std::atomic<uint64_t>& done_weight, FlowTotals& totals)
 {
     FlowWorker worker(b.g, b.level);
     worker.use_target_checks(b.params.target_checks);
     if (passages != nullptr)
         worker.use_passages(passages);
-    const PruneRows prune_rows(order.rank.data(), b.state.get(), b.mightsee.data(), b.visbits.data(), b.g.words);
+    const PruneRows prune_rows(order.rank.data(), b.state.get(), b.mightsee.data(), b.visbits.data());
+    std::vector<uint64_t> encoded;
     while (!b.cancel.load(std::memory_order_relaxed)) {
         const uint32_t r = next.fetch_add(1);
         if (r >= b.n)
@@ -109,15 +127,17 @@ void flow_worker(Bake& b, const FlowOrder& order, const Passages* passages, std:
         b.state[pi].store(kWorking, std::memory_order_relaxed);
         bool ok = false;
         try {
-            ok = worker.run(pi, r, b.mightsee_row(pi), prune_rows, b.cancel);
+            ok = worker.run(pi, r, b.mightsee[pi], prune_rows, b.cancel);
         } catch (...) {
             b.cancel.store(true); // (bad_alloc growing the frames) release the waiters
             b.state[pi].store(kAborted, std::memory_order_release);
             b.state[pi].notify_all();
             throw;
         }
-        if (ok)
-            std::copy(worker.vis().begin(), worker.vis().end(), b.visbits.begin() + ptrdiff_t(size_t{pi} * b.g.words));
+        if (ok) {
+            encode_runs(worker.vis(), encoded);
+            b.visbits[pi] = b.vis_pools[t].append(encoded);
+        }
         b.state[pi].store(ok ? kDone : kAborted, std::memory_order_release);
         b.state[pi].notify_all();
         done_weight.fetch_add(b.nummightsee[pi], std::memory_order_relaxed);
@@ -135,16 +155,23 @@ void flow_worker(Bake& b, const FlowOrder& order, const Passages* passages, std:
 // Full: ranking, passages, then the flow of every portal in rank order.
 void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
 {
-    b.visbits.assign(size_t{b.n} * b.g.words, 0);
+    b.visbits.assign(b.n, RunRow{});
+    b.vis_pools.resize(b.threads);
     const FlowOrder order = rank_portals(b.nummightsee);
     uint64_t total_weight = 0;
     for (uint32_t i = 0; i < b.n; ++i)
         total_weight += b.nummightsee[i];
     // Passages, then every portal's mightsee narrowed to what its passages reach.
+    const size_t base_row_bytes = b.row_bytes();
     Passages passages;
-    const bool use_passages = build_passages(b.g, b.level, b.mightsee, b.params.passage_budget_bytes, b.threads,
-                                             b.cancel, b.user_cancel, b.params.progress, passages);
+    RowPool narrowed;
+    const bool use_passages = build_passages(b.g, b.level, b.mightsee, narrowed, b.params.passage_budget_bytes,
+                                             b.threads, b.cancel, b.user_cancel, b.params.progress, passages);
     if (use_passages) {
+        // Every row was replaced by its narrowed copy: the base rows go.
+        b.narrowing_row_bytes = base_row_bytes + narrowed.bytes();
+        b.might_pools.clear();
+        b.might_pools.push_back(std::move(narrowed));
         rep.passage_pairs = passages.pairs();
         b.passage_row_bytes = passages.bytes();
     }
@@ -154,7 +181,8 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     std::atomic<uint64_t> done_weight{0};
     FlowTotals totals;
     run_parallel(
-        b.threads, [&](unsigned) { flow_worker(b, order, use_passages ? &passages : nullptr, next, done_weight, totals); },
+        b.threads,
+        [&](unsigned t) { flow_worker(b, t, order, use_passages ? &passages : nullptr, next, done_weight, totals); },
         b.cancel, b.user_cancel, b.params.progress,
         [&] {
             const double before = kBaseWeight + (use_passages ? kPassageWeight : 0.0);
@@ -171,7 +199,6 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
 Pvs aggregate(Bake& b, bool base_done, bool flow_started, VisReport& rep)
 {
     const Graph& g = b.g;
-    const size_t words = g.words;
     const uint32_t region_count = g.leaf_count;
     size_t total_visible = 0;
     size_t saw_self = 0;
@@ -182,9 +209,7 @@ Pvs aggregate(Bake& b, bool base_done, bool flow_started, VisReport& rep)
             for (uint32_t k = g.leaf_first[r]; k < g.leaf_first[r + 1]; ++k) {
                 const uint32_t pi = g.leaf_portals[k];
                 const bool use_vis = flow_started && b.state[pi].load(std::memory_order_acquire) == kDone;
-                const uint64_t* src = use_vis ? &b.visbits[size_t{pi} * words] : &b.mightsee[size_t{pi} * words];
-                for (size_t w = 0; w < words; ++w)
-                    row[w] |= src[w];
+                (use_vis ? b.visbits[pi] : b.mightsee[pi]).or_into(row.data());
             }
             saw_self += bits::test(row, r);
             bits::set(row, r);
@@ -222,7 +247,7 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
     rep.cancelled = b.user_cancel.load();
 
     Pvs pvs = aggregate(b, base_done, flow_started, rep);
-    rep.peak_bytes_estimate = g.bytes() + (b.mightsee.capacity() + b.visbits.capacity()) * sizeof(uint64_t) +
+    rep.peak_bytes_estimate = g.bytes() + std::max(b.row_bytes(), b.narrowing_row_bytes) +
                               size_t{b.n} * (sizeof(uint32_t) * 3 + 1) + b.worker_bytes + b.passage_row_bytes +
                               pvs.memory_bytes() + size_t{region_count} * sizeof(uint32_t) * rep.threads;
     rep.seconds = std::chrono::duration<double>(Clock::now() - start).count();
