@@ -98,6 +98,9 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
     std::vector<uint32_t> fill(g.leaf_first.begin(), g.leaf_first.end() - 1);
     for (uint32_t i = 0; i < uint32_t(g.portals.size()); ++i)
         g.leaf_portals[fill[g.portals[i].owner]++] = i;
+    g.leaf_portal_dest.resize(g.leaf_portals.size());
+    for (size_t k = 0; k < g.leaf_portals.size(); ++k)
+        g.leaf_portal_dest[k] = g.portals[g.leaf_portals[k]].leaf;
     return g;
 }
 

@@ -55,6 +55,9 @@ struct Graph {
     std::vector<Vec> points;
     std::vector<uint32_t> leaf_first; // leaf_count + 1 offsets into leaf_portals
     std::vector<uint32_t> leaf_portals;
+    // Per entry of leaf_portals, the region that portal leads into: a flood skips most portals
+    // by it (their region is reached already) without loading the portal itself.
+    std::vector<uint32_t> leaf_portal_dest;
     uint32_t max_points = 0;
     size_t used = 0;
     size_t skipped = 0;
@@ -62,7 +65,7 @@ struct Graph {
     size_t bytes() const
     {
         return portals.capacity() * sizeof(DirectedPortal) + points.capacity() * sizeof(Vec) +
-               (leaf_first.capacity() + leaf_portals.capacity()) * sizeof(uint32_t);
+               (leaf_first.capacity() + leaf_portals.capacity() + leaf_portal_dest.capacity()) * sizeof(uint32_t);
     }
 };
 
