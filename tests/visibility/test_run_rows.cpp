@@ -53,6 +53,9 @@ void expect_round_trip(const std::vector<uint64_t>& dense, RowPool& pool)
 
 TEST(RunRows, EdgeCasesComeBackBitForBit)
 {
+    RowPool fresh; // nothing appended yet: no chunk to write into, nothing to return
+    EXPECT_EQ(fresh.append_words({}), nullptr);
+    EXPECT_EQ(fresh.bytes(), 0u);
     RowPool pool;
     expect_round_trip({}, pool);
     expect_round_trip(std::vector<uint64_t>(19, 0), pool);

@@ -41,6 +41,8 @@ void encode_runs(std::span<const uint64_t> dense, std::vector<uint64_t>& out)
 
 const uint64_t* RowPool::append_words(std::span<const uint64_t> encoded)
 {
+    if (encoded.empty())
+        return nullptr; // nothing to read back (and no chunk may exist yet)
     if (capacity_ - used_ < encoded.size()) {
         capacity_ = std::max(kChunkWords, encoded.size());
         chunks_.push_back(std::make_unique_for_overwrite<uint64_t[]>(capacity_));

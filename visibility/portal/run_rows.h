@@ -77,7 +77,7 @@ class RowPool {
 public:
     // A copy of an encoded row (encode_runs' output), at an address that stays valid.
     RunRow append(std::span<const uint64_t> encoded) { return RunRow{append_words(encoded)}; }
-    // A copy of any words, at an address that stays valid.
+    // A copy of any words, at an address that stays valid (nullptr for none).
     const uint64_t* append_words(std::span<const uint64_t> words);
     // The words written so far, with the slack of every full chunk: the last chunk's unwritten
     // tail is never touched, so it takes no memory.
