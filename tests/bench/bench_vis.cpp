@@ -9,7 +9,7 @@
 //  - BM_VisScaling/<method>/rooms:<n>: generated zones (wld/gen, GenParams::bake off, seed 1) of
 //    50, 150, 500, 1500 and 5000 rooms, 2 threads, with their regions and portals as counters:
 //    portal-fast and portal-full over single regions up to 1500 rooms (5000 with
-//    --vis_max_rooms=5000: 100-190 CPU-s and 1.3-1.9 GB each, docs/performance.md), and
+//    --vis_max_rooms=5000: 90-210 CPU-s and 0.35-0.8 GB each, docs/performance.md), and
 //    clustered-fast and clustered-full over box clusters (box_clusters.h, cluster_vis.h) at
 //    every size (--vis_cluster_max_rooms=N lowers the largest), with clusters and
 //    cluster_portals as counters. Each scaling bake runs once: its figures come from that run.
@@ -320,8 +320,8 @@ void BM_VisScaling(benchmark::State& state, Method method, int rooms, bool clust
 }
 
 // Registered from main: unclustered at 50, 150, 500 and 1500 rooms, and 5000 with
-// --vis_max_rooms=5000 (two bit rows of 43 000 regions per directed portal: 1.3-1.9 GB, and
-// minutes of CPU: docs/performance.md); clustered at all five sizes (--vis_cluster_max_rooms).
+// --vis_max_rooms=5000 (minutes of CPU, and 0.35-0.8 GB of process memory even with the rows
+// kept as runs: docs/performance.md); clustered at all five sizes (--vis_cluster_max_rooms).
 void register_scaling(int max_rooms, int max_cluster_rooms)
 {
     for (bool clustered : {false, true})

@@ -1,0 +1,212 @@
+// The portal flow (flow.h): the walk, entering a leaf, and the clips by the frame's cached
+// separators (tests 0 and 1).
+#include "visibility/portal/flow.h"
+
+#include "visibility/bit_row.h"
+#include "visibility/portal/separators.h"
+
+namespace pvs::portal_vis {
+namespace {
+
+constexpr uint32_t kCancelCheckSteps = 1024; // flow steps between looks at the cancel flag
+
+} // namespace
+
+bool FlowWorker::enter(uint32_t leaf, uint32_t entry)
+{
+    if (on_stack_[leaf]) {
+        ++leaf_recursions_;
+        return false;
+    }
+    Frame& f = frame(depth_ + 1);
+    ++depth_;
+    f.leaf = leaf;
+    f.entry = entry;
+    f.cursor = g_.leaf_first[leaf];
+    f.end = g_.leaf_first[leaf + 1];
+    f.separators[0].next_edge = f.separators[1].next_edge = 0;
+    f.separators[0].count = f.separators[1].count = 0;
+    on_stack_[leaf] = 1;
+    bits::set(vis_, leaf);
+    return true;
+}
+
+WRef FlowWorker::clip_to_frame_separators(WRef w, Frame& f, const Frame& prev, const DPlane& head_plane)
+{
+    for (int t = 0; t < 2 && w && level_ > t; ++t) {
+        SeparatorCache& cache = f.separators[t];
+        const WRef& a = t == 0 ? prev.source : prev.pass;
+        const DPlane& a_plane = t == 0 ? head_plane : prev.portalplane;
+        const WRef& b = t == 0 ? prev.pass : prev.source;
+        for (uint32_t k = 0; w; ++k) {
+            if (k == cache.count) {
+                // More planes are needed: the next edges of A (at most kMaxSeparators kept:
+                // fewer planes clip less, so the result stays conservative).
+                if (cache.next_edge == 0)
+                    sides_to_plane(b, a_plane, cache.b_side.data());
+                bool found = false;
+                while (!found && cache.next_edge < a.count && cache.count < kMaxSeparators)
+                    found = edge_separator(a, b, cache.b_side.data(), cache.next_edge++, t == 1,
+                                           cache.planes[cache.count]);
+                if (!found)
+                    break; // no edge left
+                ++cache.count;
+            }
+            w = clip(w, cache.planes[k], f);
+        }
+    }
+    return w;
+}
+
+bool FlowWorker::adds_leaf(const Frame& prev, const RunRow& test, uint32_t first_run, uint32_t lo, uint32_t hi,
+                           const uint64_t* passage) const
+{
+    for (uint32_t i = first_run; i < test.runs() && test.start(i) < hi; ++i) {
+        const uint32_t start = test.start(i), end = std::min(hi, test.end(i));
+        const uint64_t* t = test.words(i);
+        for (uint32_t w = std::max(lo, start); w < end; ++w)
+            if ((prev.mightsee[w] & t[w - start] & passage[w - lo] & ~vis_[w]) != 0)
+                return true;
+    }
+    return false;
+}
+
+void FlowWorker::narrow_mightsee_into(Frame& f, const Frame& prev, const RunRow& test, uint32_t first_run,
+                                      uint32_t lo, uint32_t hi, const uint64_t* passage)
+{
+    uint32_t w = std::max(lo, test.start(first_run));
+    f.lo = w;
+    for (uint32_t i = first_run; i < test.runs() && test.start(i) < hi; ++i) {
+        const uint32_t start = test.start(i), end = std::min(hi, test.end(i));
+        const uint64_t* t = test.words(i);
+        for (; w < start; ++w)
+            f.mightsee[w] = 0; // between two runs
+        for (; w < end; ++w)
+            f.mightsee[w] = prev.mightsee[w] & t[w - start] & passage[w - lo];
+    }
+    f.hi = w;
+}
+
+bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
+                     const std::atomic<bool>& cancel)
+{
+    const DirectedPortal& p = g_.portals[pi];
+    std::fill(vis_.begin(), vis_.end(), 0);
+
+    Frame& head = frame(0);
+    head.source = portal_winding(pi);
+    head.pass = {};
+    head.portalplane = p.plane;
+    // Dense while the walk reads it, written over the words its runs span only.
+    const uint32_t runs = head_mightsee.runs();
+    head.lo = runs == 0 ? 0 : head_mightsee.start(0);
+    head.hi = runs == 0 ? 0 : head_mightsee.end(runs - 1);
+    std::fill(head.mightsee.begin() + head.lo, head.mightsee.begin() + head.hi, 0);
+    head_mightsee.or_into(head.mightsee.data());
+    depth_ = 0;
+    enter(p.leaf, pi);
+
+    uint32_t steps = 0;
+    bool cancelled = false;
+    while (depth_ > 0) {
+        Frame& f = *frames_[depth_];
+        const Frame& prev = *frames_[depth_ - 1];
+        if (f.cursor == f.end) {
+            leave();
+            continue;
+        }
+        if (++steps == kCancelCheckSteps) {
+            steps = 0;
+            if (cancel.load(std::memory_order_relaxed)) {
+                cancelled = true;
+                break;
+            }
+        }
+        const uint32_t qi = g_.leaf_portals[f.cursor++];
+        const DirectedPortal& q = g_.portals[qi];
+        // The windings of the previous target are dead: its subtree is done.
+        for (bool& used : f.slot_used)
+            used = false;
+
+        // Mightsee prune, then "nothing new": might = prev.mightsee & (q's visbits or mightsee).
+        const uint32_t leaf_word = q.leaf >> 6;
+        if (leaf_word < prev.lo || leaf_word >= prev.hi || !bits::test(prev.mightsee, q.leaf))
+            continue;
+        // Can't go out a coplanar face.
+        if (normals_equal(prev.portalplane.normal, -q.plane.normal))
+            continue;
+        // The passage (the portal into this leaf, q): q's own leaf, then the words it spans.
+        uint32_t lo = prev.lo, hi = prev.hi;
+        const uint64_t* passage = ones_.data(); // indexed from lo
+        if (passages_ != nullptr) {
+            const PassageRow row = passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]);
+            if (!row.test(q.leaf))
+                continue;
+            lo = std::max(lo, row.lo);
+            hi = std::min(hi, row.hi);
+            passage = row.words + (lo - row.lo);
+        }
+        const RunRow test = prune_rows.row(qi, rank, wait_nanos_);
+        if (!test) {
+            cancelled = true;
+            break;
+        }
+        const uint32_t first_run = test.first_run_after(lo);
+        if (!adds_leaf(prev, test, first_run, lo, hi, passage))
+            continue;
+        const auto narrow = [&] { narrow_mightsee_into(f, prev, test, first_run, lo, hi, passage); };
+
+        // The part of the target in front of the source portal.
+        WRef pass = clip(portal_winding(qi), head.portalplane, f);
+        if (!pass)
+            continue;
+        if (!prev.pass) {
+            // The second leaf: only coplanarity can block it.
+            f.source = prev.source;
+            f.pass = pass;
+            f.portalplane = q.plane;
+            narrow();
+            enter(q.leaf, qi);
+            continue;
+        }
+        // The part of the target in front of the pass portal, and of the source behind the target.
+        pass = clip(pass, prev.portalplane, f);
+        if (!pass)
+            continue;
+        WRef source = clip(prev.source, q.plane.flipped(), f);
+        if (!source)
+            continue;
+
+        // Test 0: source -> pass separators clip the target. Test 1: pass -> source, mirrored.
+        pass = clip_to_frame_separators(pass, f, prev, head.portalplane);
+        if (!pass)
+            continue;
+        // Test 2: target -> pass separators clip the source. Test 3: pass -> target, mirrored.
+        const auto clip_source = [&](const DPlane& sep) {
+            source = clip(source, sep, f);
+            return bool(source);
+        };
+        if (level_ > 2)
+            for_each_separator(pass, q.plane, prev.pass, false, b_side_.data(), clip_source);
+        if (level_ > 3 && source)
+            for_each_separator(prev.pass, prev.portalplane, pass, true, b_side_.data(), clip_source);
+        if (!source)
+            continue;
+
+        f.source = source;
+        f.pass = pass;
+        f.portalplane = q.plane;
+        narrow();
+        const bool seen_before = bits::test(vis_, q.leaf);
+        if (enter(q.leaf, qi) && seen_before && target_checks_ && !may_add_leaf(head))
+            leave(); // nothing below could add a leaf
+    }
+    if (cancelled) {
+        while (depth_ > 0)
+            leave();
+        return false;
+    }
+    return true;
+}
+
+} // namespace pvs::portal_vis

@@ -1,0 +1,184 @@
+// Passages (passages.h): the rows, their flood (FlowWorker::passage_row, which clips with the
+// flow's frame and scratch) and the narrowing of mightsee.
+#include "visibility/portal/passages.h"
+
+#include "visibility/bit_row.h"
+#include "visibility/portal/flow.h"
+#include "visibility/portal/separators.h"
+#include "visibility/portal/vis_threads.h"
+
+#include <algorithm>
+#include <span>
+
+namespace pvs::portal_vis {
+
+void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<RunRow>& mightsee, RowPool& pool)
+{
+    const size_t words = g.words;
+    std::vector<uint64_t> reach(words), might(words), encoded;
+    for (uint32_t a = 0; a < uint32_t(g.portals.size()); ++a) {
+        std::fill(reach.begin(), reach.end(), 0);
+        bits::set(reach, g.portals[a].leaf);
+        for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k) {
+            const PassageRow row = passages.row(a, k);
+            for (size_t w = row.lo; w < row.hi; ++w)
+                reach[w] |= row.words[w - row.lo];
+        }
+        std::fill(might.begin(), might.end(), 0);
+        mightsee[a].or_into(might.data());
+        for (size_t w = 0; w < words; ++w)
+            might[w] &= reach[w];
+        encode_runs(might, encoded);
+        mightsee[a] = pool.append(encoded);
+    }
+}
+
+// A row: a flood from b's leaf through the portals that survive a's plane, b's plane and the
+// separators between a and b (b clipped to the front of a), within a.mightsee & b.mightsee.
+void FlowWorker::passage_row(uint32_t ai, uint32_t k, const uint64_t* ma, const uint64_t* mb, uint64_t* out)
+{
+    const size_t words = g_.words;
+    std::fill(out, out + words, 0);
+    const DirectedPortal& a = g_.portals[ai];
+    const uint32_t bi = g_.leaf_portals[g_.leaf_first[a.leaf] + k];
+    const DirectedPortal& b = g_.portals[bi];
+    if (bi == (ai ^ 1u))
+        return;
+    Frame& f = frame(0);
+    for (bool& used : f.slot_used)
+        used = false;
+    if (normals_equal(a.plane.normal, -b.plane.normal))
+        return;
+    const WRef bw = clip(portal_winding(bi), a.plane, f);
+    if (!bw)
+        return;
+    bits::set(std::span<uint64_t>(out, words), b.leaf);
+    const WRef aw = portal_winding(ai);
+    std::vector<DPlane>& planes = passage_planes_;
+    planes.clear();
+    const auto keep = [&](const DPlane& sep) {
+        planes.push_back(sep);
+        return true;
+    };
+    if (level_ > 0) // test 0: a -> b
+        for_each_separator(aw, a.plane, bw, false, b_side_.data(), keep);
+    if (level_ > 1) // test 1: b -> a, mirrored
+        for_each_separator(bw, b.plane, aw, true, b_side_.data(), keep);
+    // Flood from b's leaf through the portals a line through a and b can cross.
+    std::vector<uint32_t>& stack = passage_stack_;
+    stack.clear();
+    stack.push_back(b.leaf);
+    const std::span<uint64_t> row(out, words);
+    while (!stack.empty()) {
+        const uint32_t y = stack.back();
+        stack.pop_back();
+        for (uint32_t o = g_.leaf_first[y]; o < g_.leaf_first[y + 1]; ++o) {
+            const uint32_t ri = g_.leaf_portals[o];
+            const DirectedPortal& r = g_.portals[ri];
+            const uint32_t x = r.leaf;
+            if (bits::test(row, x) || !bits::test(std::span<const uint64_t>(ma, words), x) ||
+                !bits::test(std::span<const uint64_t>(mb, words), x))
+                continue;
+            // Spheres first: one dot product per plane.
+            bool behind = false, inside = true;
+            auto sphere = [&](const DPlane& pl) {
+                const double c = pl.distance(r.origin);
+                behind |= c < -r.radius;
+                inside &= c > r.radius;
+            };
+            sphere(a.plane);
+            sphere(b.plane);
+            for (size_t pl = 0; pl < planes.size() && !behind; ++pl)
+                sphere(planes[pl]);
+            if (behind)
+                continue;
+            bool seen = inside;
+            if (!seen) {
+                for (int s2 = 0; s2 < kStackWindings; ++s2)
+                    f.slot_used[s2] = s2 == bw.slot && bw.owner == &f;
+                WRef w = clip(portal_winding(ri), a.plane, f);
+                w = clip(w, b.plane, f);
+                for (size_t pl = 0; pl < planes.size() && w; ++pl)
+                    w = clip(w, planes[pl], f);
+                seen = bool(w);
+            }
+            if (!seen)
+                continue;
+            bits::set(row, x);
+            stack.push_back(x);
+        }
+    }
+}
+
+bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, RowPool& narrowed, size_t budget,
+                    unsigned threads, std::atomic<bool>& cancel, std::atomic<bool>& user_cancel,
+                    const std::function<bool(double)>& progress, Passages& out)
+{
+    const auto n = uint32_t(g.portals.size());
+    if (n == 0)
+        return false;
+    out.first.assign(size_t{n} + 1, 0);
+    for (uint32_t a = 0; a < n; ++a) {
+        const uint32_t leaf = g.portals[a].leaf;
+        out.first[a + 1] = out.first[a] + (g.leaf_first[leaf + 1] - g.leaf_first[leaf]);
+    }
+    const size_t pairs = out.first[n];
+    const size_t fixed_bytes = out.first.size() * sizeof(size_t) + pairs * sizeof(uint32_t);
+    if (fixed_bytes > budget) {
+        out = {};
+        return false;
+    }
+    out.start.assign(pairs, 0);
+    out.block.assign(n, nullptr);
+    out.pools.resize(threads);
+    // (the per-portal block pointers are not counted: the decision stays what it was when the
+    // rows were one array)
+    const size_t word_budget = std::min<size_t>((budget - fixed_bytes) / sizeof(uint64_t), UINT32_MAX);
+    std::atomic<size_t> total_words{0};
+    std::atomic<bool> over_budget{false};
+    std::atomic<uint32_t> next_portal{0}, portals_done{0};
+    run_parallel(
+        threads,
+        [&](unsigned t) {
+            FlowWorker worker(g, level);
+            std::vector<uint64_t> dense(g.words), packed, ma(g.words), mb(g.words);
+            while (!cancel.load(std::memory_order_relaxed) && !over_budget.load(std::memory_order_relaxed)) {
+                const uint32_t a = next_portal.fetch_add(1);
+                if (a >= n)
+                    break;
+                packed.clear();
+                std::fill(ma.begin(), ma.end(), 0);
+                mightsee[a].or_into(ma.data());
+                const uint32_t dest = g.portals[a].leaf;
+                for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k) {
+                    std::fill(mb.begin(), mb.end(), 0);
+                    mightsee[g.leaf_portals[g.leaf_first[dest] + k]].or_into(mb.data());
+                    worker.passage_row(a, uint32_t(k), ma.data(), mb.data(), dense.data());
+                    uint32_t lo = 0, hi = uint32_t(g.words);
+                    while (lo < hi && dense[lo] == 0)
+                        ++lo;
+                    while (hi > lo && dense[hi - 1] == 0)
+                        --hi;
+                    out.start[out.first[a] + k] = uint32_t(packed.size());
+                    packed.push_back(uint64_t{lo} | uint64_t{hi} << 32);
+                    packed.insert(packed.end(), dense.begin() + lo, dense.begin() + hi);
+                }
+                if (total_words.fetch_add(packed.size()) + packed.size() > word_budget) {
+                    over_budget.store(true);
+                    break;
+                }
+                out.block[a] = out.pools[t].append_words(packed);
+                portals_done.fetch_add(1, std::memory_order_relaxed);
+            }
+        },
+        cancel, user_cancel, progress,
+        [&] { return kBaseWeight + kPassageWeight * double(portals_done.load()) / double(n); });
+    if (cancel.load() || over_budget.load()) {
+        out = {};
+        return false;
+    }
+    narrow_mightsee(g, out, mightsee, narrowed);
+    return true;
+}
+
+} // namespace pvs::portal_vis
