@@ -43,22 +43,34 @@ void PictureOcclusion::set_frame(const Zone& zone, const Camera& view, uint32_t 
     height_ = height;
     corners_x_ = width / kDepthTile + 2;
     corners_y_ = height / kDepthTile + 2;
-    corner_depths_.assign(size_t(corners_x_) * corners_y_, std::numeric_limits<float>::quiet_NaN());
+    corner_depths_.assign(size_t(corners_x_) * corners_y_, kInfinity);
+    row_traced_.assign(corners_y_, 0);
+    row_directions_.resize(corners_x_);
+    row_hits_.resize(corners_x_);
+}
+
+void PictureOcclusion::trace_corner_row(uint32_t cy) const
+{
+    // One row of corners in packets of coherent rays (MeshTracer::first_hits): about 3x cheaper
+    // a ray than one at a time, and a line that needs one corner of a row soon needs its others.
+    const float v = float(cy * kDepthTile);
+    for (uint32_t cx = 0; cx < corners_x_; ++cx) {
+        const float u = float(cx * kDepthTile);
+        row_directions_[cx] = forward_ + side_ * (2.0f * u / float(width_) - 1.0f) + up_ * (1.0f - 2.0f * v / float(height_));
+    }
+    tracer_.first_hits(view_.position, row_directions_, 0.0f, kInfinity, row_hits_, &filter_);
+    rays_ += corners_x_;
+    float* depths = corner_depths_.data() + size_t(cy) * corners_x_;
+    for (uint32_t cx = 0; cx < corners_x_; ++cx) // the directions' forward part is 1: t is the view depth
+        depths[cx] = row_hits_[cx].hit ? row_hits_[cx].t : kInfinity;
+    row_traced_[cy] = 1;
 }
 
 float PictureOcclusion::corner_depth(uint32_t cx, uint32_t cy) const
 {
-    float& depth = corner_depths_[size_t(cy) * corners_x_ + cx];
-    if (!std::isnan(depth))
-        return depth;
-    const float u = float(cx * kDepthTile), v = float(cy * kDepthTile);
-    const glm::vec3 direction =
-        forward_ + side_ * (2.0f * u / float(width_) - 1.0f) + up_ * (1.0f - 2.0f * v / float(height_));
-    const float length = glm::length(direction);
-    ++rays_;
-    const MeshTracer::Hit hit = tracer_.first_hit(view_.position, direction / length, kInfinity, filter_);
-    depth = hit.hit ? hit.t / length : kInfinity; // along forward: direction's forward part is 1
-    return depth;
+    if (!row_traced_[cy])
+        trace_corner_row(cy);
+    return corner_depths_[size_t(cy) * corners_x_ + cx];
 }
 
 bool PictureOcclusion::exact_hidden(const glm::vec3& point) const

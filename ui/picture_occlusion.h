@@ -10,7 +10,8 @@
 //
 // Cost. A frame with every overlay on e1m1 tests 100 000+ line pieces, too many for one ray each
 // (a few hundred ns each). So the picture is cut into kDepthTile-pixel tiles whose corner
-// pixels are traced on demand (each once per frame) for the view depth of the surface there. A
+// pixels are traced on demand, a row of corners at a time in packets of coherent rays (each
+// row once per frame), for the view depth of the surface there. A
 // surface across a tile has its depth between the corners' (1/depth is linear on the screen
 // over a plane): a point nearer than every corner is in sight, one farther than every corner
 // (by the bias) is hidden, and only points in between (on a wall, or at an edge where the
@@ -62,6 +63,7 @@ public:
 private:
     bool exact_hidden(const glm::vec3& point) const;
     float corner_depth(uint32_t cx, uint32_t cy) const; // view depth of the surface, +inf for none
+    void trace_corner_row(uint32_t cy) const;
 
     MeshTracer tracer_;
     std::vector<uint8_t> drawn_faces_;
@@ -70,7 +72,10 @@ private:
     glm::vec3 forward_{1, 0, 0}, side_{0, -1, 0}, up_{0, 0, 1}; // the view's basis, side scaled to the image
     glm::mat4 view_projection_{1.0f};
     uint32_t width_ = 0, height_ = 0, corners_x_ = 0, corners_y_ = 0;
-    mutable std::vector<float> corner_depths_; // NaN = not traced yet this frame
+    mutable std::vector<float> corner_depths_;   // per corner, valid once its row is traced
+    mutable std::vector<uint8_t> row_traced_;     // per corner row, this frame
+    mutable std::vector<glm::vec3> row_directions_;
+    mutable std::vector<MeshTracer::Hit> row_hits_;
     mutable uint64_t rays_ = 0;
 };
 
