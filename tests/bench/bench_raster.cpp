@@ -50,6 +50,25 @@ const Level* level()
     return loaded.get();
 }
 
+// Times `renderer.render(point, seen)` over the level's points; counts the faces seen.
+template <class Renderer>
+void time_views(benchmark::State& state, const Level& l, Renderer& renderer)
+{
+    std::vector<uint8_t> seen(l.zone.mesh.faces.size());
+    uint64_t faces = 0;
+    for (auto _ : state) {
+        faces = 0;
+        for (const glm::vec3& p : l.points) {
+            std::fill(seen.begin(), seen.end(), 0);
+            renderer.render(p, seen);
+            for (uint8_t s : seen)
+                faces += s;
+        }
+    }
+    state.counters["points"] = double(l.points.size());
+    state.counters["faces_seen"] = double(faces);
+}
+
 void BM_CubeRaster(benchmark::State& state)
 {
     const Level* l = level();
@@ -58,19 +77,7 @@ void BM_CubeRaster(benchmark::State& state)
         return;
     }
     CubeRaster raster(l->zone, {uint32_t(state.range(0)), true, 0.05f});
-    std::vector<uint8_t> seen(l->zone.mesh.faces.size());
-    uint64_t faces = 0;
-    for (auto _ : state) {
-        faces = 0;
-        for (const glm::vec3& p : l->points) {
-            std::fill(seen.begin(), seen.end(), 0);
-            raster.render(p, seen);
-            for (uint8_t s : seen)
-                faces += s;
-        }
-    }
-    state.counters["points"] = double(l->points.size());
-    state.counters["faces_seen"] = double(faces);
+    time_views(state, *l, raster);
 }
 
 void BM_EmbreePrimaryRays(benchmark::State& state)
@@ -117,19 +124,7 @@ void BM_EmbreePacketRays(benchmark::State& state)
         return;
     }
     RayCube rays(*l->tracer, l->zone.mesh.faces.size(), {uint32_t(state.range(0)), true, 0.05f});
-    std::vector<uint8_t> seen(l->zone.mesh.faces.size());
-    uint64_t faces = 0;
-    for (auto _ : state) {
-        faces = 0;
-        for (const glm::vec3& p : l->points) {
-            std::fill(seen.begin(), seen.end(), 0);
-            rays.render(p, seen);
-            for (uint8_t s : seen)
-                faces += s;
-        }
-    }
-    state.counters["points"] = double(l->points.size());
-    state.counters["faces_seen"] = double(faces);
+    time_views(state, *l, rays);
 }
 
 BENCHMARK(BM_CubeRaster)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
