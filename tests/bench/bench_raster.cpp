@@ -123,7 +123,7 @@ void BM_EmbreePacketRays(benchmark::State& state)
         state.SkipWithError("needs ../shared/data/hateengine/E1M1.obj");
         return;
     }
-    RayCube rays(*l->tracer, l->zone.mesh.faces.size(), {uint32_t(state.range(0)), true, 0.05f});
+    RayCube rays(*l->tracer, {uint32_t(state.range(0)), true, 0.05f});
     time_views(state, *l, rays);
 }
 

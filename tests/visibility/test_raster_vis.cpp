@@ -170,7 +170,7 @@ TEST(RasterEngines, RaysAndTheRasteriserSeeTheSameFaces)
     CubeRasterOptions options;
     options.resolution = 48;
     CubeRaster raster(zone, options);
-    RayCube rays(tracer, zone.mesh.faces.size(), options);
+    RayCube rays(tracer, options);
     size_t both = 0, only_one = 0;
     for (uint32_t r = 0; r < zone.region_count(); r += 3) {
         const Aabb& box = zone.regions[r].bounds;

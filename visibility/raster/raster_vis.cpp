@@ -39,7 +39,7 @@ struct Worker {
 // Bakes `cells` rows: points_of(cell, out) gives each cell's points in zone space.
 template <class PointsOf>
 Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, RasterReport* report, PointsOf&& points_of,
-               bool own_region)
+               bool own_region, const MeshTracer* tracer)
 {
     const auto start = std::chrono::steady_clock::now();
     const FaceRegions faces = build_face_regions(zone);
@@ -49,15 +49,12 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     std::atomic<uint64_t> done{0}, points{0};
     std::atomic<bool> stop{false};
     const unsigned threads = params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency());
-    std::unique_ptr<MeshTracer> tracer; // shared by the threads' RayCubes (read-only)
-    if (params.engine == RasterEngine::Rays)
-        tracer = std::make_unique<MeshTracer>(zone);
     const bool finished = parallel_items(
         cells, threads, params.progress, [&] { return cells ? double(done.load()) / cells : 1.0; }, stop,
         [&] {
             Worker w;
-            if (tracer)
-                w.rays.emplace(*tracer, zone.mesh.faces.size(), params.raster);
+            if (params.engine == RasterEngine::Rays)
+                w.rays.emplace(*tracer, params.raster);
             else
                 w.raster.emplace(zone, params.raster);
             w.seen.assign(zone.mesh.faces.size(), 0);
@@ -145,13 +142,15 @@ Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams&
 {
     if (grid.cell_count() > 0xffffffffull)
         throw std::invalid_argument("raster: too many grid cells");
-    std::unique_ptr<MeshTracer> mesh; // where open space is, in a zone without a tree
-    if (params.open_space_only && !zone.tree.exists())
+    // The mesh's tracer, built once: where open space is (a zone without a tree) and the pixel rays.
+    std::unique_ptr<MeshTracer> mesh;
+    if ((params.open_space_only && !zone.tree.exists()) || params.engine == RasterEngine::Rays)
         mesh = std::make_unique<MeshTracer>(zone);
     const auto open = [&](const glm::vec3& p) {
         if (!params.open_space_only)
             return true;
-        return mesh ? mesh->in_open_space(p, 2.0f * params.raster.near_distance) : locate_point(zone.tree, p).in_region();
+        return zone.tree.exists() ? locate_point(zone.tree, p).in_region()
+                                  : mesh->in_open_space(p, 2.0f * params.raster.near_distance);
     };
     return bake_cells(
         zone, uint32_t(grid.cell_count()), params, report,
@@ -173,7 +172,7 @@ Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams&
                     points.push_back(p);
             return points;
         },
-        false);
+        false, mesh.get());
 }
 
 Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterReport* report)
@@ -181,6 +180,9 @@ Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterRepo
     if (!zone.tree.exists())
         throw std::invalid_argument("raster over regions needs a BSP tree to place points in the regions");
     const RegionSampler sampler(zone);
+    std::unique_ptr<MeshTracer> mesh; // the pixel rays' tracer, built once for every thread
+    if (params.engine == RasterEngine::Rays)
+        mesh = std::make_unique<MeshTracer>(zone);
     return bake_cells(
         zone, uint32_t(zone.region_count()), params, report,
         [&](uint32_t region) {
@@ -196,7 +198,7 @@ Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterRepo
             }
             return points;
         },
-        true);
+        true, mesh.get());
 }
 
 } // namespace pvs

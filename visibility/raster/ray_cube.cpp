@@ -4,11 +4,8 @@
 
 namespace pvs {
 
-RayCube::RayCube(const MeshTracer& tracer, size_t face_count, const CubeRasterOptions& options)
-    : tracer_(tracer), options_(options), all_faces_(face_count, 1)
+RayCube::RayCube(const MeshTracer& tracer, const CubeRasterOptions& options) : tracer_(tracer), options_(options)
 {
-    front_only_.face_enabled = all_faces_;
-    front_only_.front_only = true;
     const size_t pixels = size_t(options.resolution) * options.resolution;
     directions_.resize(pixels);
     hits_.resize(pixels);

@@ -22,7 +22,7 @@ namespace pvs {
 
 class RayCube {
 public:
-    RayCube(const MeshTracer& tracer, size_t face_count, const CubeRasterOptions& options);
+    RayCube(const MeshTracer& tracer, const CubeRasterOptions& options);
 
     // Sets seen[face] = 1 for each mesh face a pixel ray of the six views meets first (seen has
     // one entry per face; entries already set stay set).
@@ -31,8 +31,7 @@ public:
 private:
     const MeshTracer& tracer_;
     CubeRasterOptions options_;
-    std::vector<uint8_t> all_faces_; // the filter's mask: every face (front_only does the culling)
-    MeshTracer::FaceFilter front_only_;
+    MeshTracer::FaceFilter front_only_{{}, true}; // every face, front sides only (culls back faces)
     std::vector<glm::vec3> directions_; // one view's pixel directions, rows of resolution
     std::vector<MeshTracer::Hit> hits_;
 };

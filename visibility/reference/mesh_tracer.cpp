@@ -168,11 +168,11 @@ void MeshTracer::first_hits(const glm::vec3& origin, std::span<const glm::vec3> 
                             float t_far, std::span<Hit> out, const FaceFilter* filter) const
 {
     constexpr size_t kPacket = 8;
-    const FaceFilter all{};
-    FilterContext filtered = make_filter_context(impl_->triangle_face, impl_->triangle_normal, filter ? *filter : all);
+    FilterContext filtered{};
+    rtcInitIntersectContext(&filtered.base);
+    if (filter)
+        filtered = make_filter_context(impl_->triangle_face, impl_->triangle_normal, *filter);
     RTCIntersectContext& context = filtered.base;
-    if (!filter)
-        context.filter = nullptr;
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     for (size_t first = 0; first < directions.size(); first += kPacket) {
         const size_t count = std::min(kPacket, directions.size() - first);
