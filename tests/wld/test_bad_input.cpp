@@ -161,6 +161,15 @@ TEST_F(CorruptExample, PvsRowRunningPastTheLumpIsReported)
     EXPECT_NE(error().find("runs past the end of the visibility lump"), std::string::npos) << error();
 }
 
+// Found by fuzz_bsp29 in CI: a texture lump of 1-3 bytes made the count check subtract 4 from
+// its length, wrap around and accept any count, so the reader resized the materials to 2^31.
+TEST_F(CorruptExample, TextureLumpShorterThanItsCountFieldIsReported)
+{
+    put<int32_t>(size_t(lump_offset(2)), 0x7fffffff); // miptex count
+    put<int32_t>(4 + 8 * 2 + 4, 3);                     // textures lump length
+    EXPECT_NE(error().find("texture lump is 3 bytes"), std::string::npos) << error();
+}
+
 TEST_F(CorruptExample, UnterminatedEntityIsReportedWithItsOffset)
 {
     const int32_t ent_ofs = lump_offset(0), ent_len = get<int32_t>(4 + 4);

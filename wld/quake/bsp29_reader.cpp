@@ -289,6 +289,9 @@ void read_textures(const Bsp& bsp, Zone& zone)
     const LumpSpan& lump = bsp.lumps[kTextures];
     if (lump.length == 0)
         return; // no textures: every texinfo reference will be out of range and reported there
+    if (lump.length < 4) // the count check below subtracts 4 from the length
+        bsp.in.fail(lump.offset, "texture lump is " + std::to_string(lump.length) +
+                                     " bytes, too short for its miptex count");
     const auto count = bsp.in.read<int32_t>(lump.offset, "miptex count");
     if (count < 0 || uint64_t(count) > (lump.length - 4) / 4)
         bsp.in.fail(lump.offset, "miptex count " + std::to_string(count) + " does not fit the texture lump");
