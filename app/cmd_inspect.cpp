@@ -1,38 +1,15 @@
+// The inspect command's options (cmd_inspect.h); the window itself is inspector_main.cpp's.
 #include "app/cmd_inspect.h"
 
 #include "app/arguments.h"
 #include "app/cli_validators.h"
-#include "app/zone_load_args.h"
-#include "ui/gui/inspector_app.h"
 
 #include <memory>
-#include <optional>
 #include <sstream>
 #include <string>
 
 namespace pvs::app {
 
-namespace {
-
-struct InspectOptions {
-    std::string path;
-    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
-    std::string screenshot;
-    int frames = 5;
-    std::string size = "1280x800";
-    std::string camera;
-    std::string cull = "pvs+frustum";
-    bool report_fps = false;
-    std::string overlays = "zonelines,frustum";
-    bool pick_centre = false;
-    int bsp_node = -1;
-    std::string bake;
-    bool compare = false;
-    std::string stability_case;
-    std::string hidden_lines = "faint";
-};
-
-// "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell" (any subset, or "none") -> the toggles.
 std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
 {
     ui::OverlaySettings o;
@@ -64,18 +41,9 @@ std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
     return o;
 }
 
-} // namespace
-
-int run_inspect(const std::string& path)
+void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(const InspectArguments&)> run)
 {
-    gui::InspectorOptions options;
-    options.zone_path = path;
-    return gui::run_inspector(options);
-}
-
-void register_inspect_command(CLI::App& app, int& exit_code)
-{
-    auto o = std::make_shared<InspectOptions>();
+    auto o = std::make_shared<InspectArguments>();
     CLI::App* cmd = app.add_subcommand("inspect", "Open the inspector window (the default when no subcommand is given)");
     cmd->add_option("file", o->path, "Zone file; the built-in demo zone when absent");
     add_zone_load_options(cmd, o->load);
@@ -120,35 +88,7 @@ void register_inspect_command(CLI::App& app, int& exit_code)
     cmd->add_option("--case", o->stability_case,
                     "Open crafted stability case NAME[:METHOD] at its camera, culling with METHOD's PVS (default "
                     "portal-full), the Stability panel open (instead of a file; pvscope stability --cases lists them)");
-    cmd->callback([o, &exit_code] {
-        const auto size = parse_size_argument(o->size); // the validator accepted it
-        gui::InspectorOptions options;
-        options.zone_path = o->path;
-        options.zone_load = o->load;
-        options.screenshot = o->screenshot;
-        options.frames = o->frames;
-        options.width = (*size)[0];
-        options.height = (*size)[1];
-        if (!o->camera.empty())
-            options.camera = parse_camera_argument(o->camera);
-        options.cull_mode = parse_cull_mode(o->cull).value_or(CullMode::PvsFrustum);
-        options.report_fps = o->report_fps;
-        options.overlays = parse_overlays(o->overlays).value_or(ui::OverlaySettings{});
-        options.overlays.hidden_lines = o->hidden_lines == "hidden" ? ui::HiddenLines::Hidden
-                                        : o->hidden_lines == "shown" ? ui::HiddenLines::Shown
-                                                                     : ui::HiddenLines::Faint;
-        options.pick_centre = o->pick_centre;
-        options.bsp_node = o->bsp_node;
-        options.compare = o->compare;
-        options.stability_case = o->stability_case;
-        if (!o->bake.empty()) {
-            gui::BakeRequest request;
-            request.method = o->bake == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
-            request.threads = 1;
-            options.bake = request;
-        }
-        exit_code = gui::run_inspector(options);
-    });
+    cmd->callback([o, &exit_code, run] { exit_code = run(*o); });
 }
 
 } // namespace pvs::app

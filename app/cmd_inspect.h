@@ -1,20 +1,49 @@
 // `pvscope inspect [FILE] [--screenshot out.png --frames N] [--size WxH] [--camera x,y,z,yaw,pitch]
-// [--cull MODE]`: the inspector window
-// (ui/gui). `pvscope` with no subcommand opens it too: on FILE when one is given, else on the
-// built-in demo zone. Linked into the pvscope executable only (not pvscope_cli), because it
-// brings GLFW, OpenGL and Dear ImGui.
+// [--cull MODE] ...`: the inspector window (ui/gui). `pvscope` with no subcommand opens it too: on
+// FILE when one is given, else on the built-in demo zone.
+//
+// The command's options and their checks live here, free of any GUI library, so that both
+// executables register the same command: `pvscope` (every command; it links no GUI, no
+// Irrlicht, no Embree, so a bake or an `info` starts small) checks the arguments and hands the
+// process over to `pvscope-inspector` (inspector_launch.h), which parses them again and opens
+// the window (inspector_main.cpp).
 #pragma once
+
+#include "app/zone_load_args.h"
+#include "ui/zone_overlays.h"
 
 #include <CLI/App.hpp>
 
+#include <functional>
+#include <optional>
 #include <string>
 
 namespace pvs::app {
 
-// Registers the subcommand; `exit_code` receives the command's result when it runs.
-void register_inspect_command(CLI::App& app, int& exit_code);
+// The inspect command's arguments as given (checked by the command's validators).
+struct InspectArguments {
+    std::string path; // empty: the built-in demo zone
+    ZoneLoadOptions load; // --map, --gwa (Doom WADs)
+    std::string screenshot;
+    int frames = 5;
+    std::string size = "1280x800";
+    std::string camera;
+    std::string cull = "pvs+frustum";
+    bool report_fps = false;
+    std::string overlays = "zonelines,frustum";
+    bool pick_centre = false;
+    int bsp_node = -1;
+    std::string bake;
+    bool compare = false;
+    std::string stability_case;
+    std::string hidden_lines = "faint";
+};
 
-// The inspector on `path` (empty: the demo zone) in a 1280x800 window, until it is closed.
-int run_inspect(const std::string& path);
+// Registers the subcommand; when it runs, `exit_code` receives run(arguments).
+void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(const InspectArguments&)> run);
+
+// "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell" (any subset, or
+// "none") -> the overlay toggles; nullopt for an unknown name.
+std::optional<ui::OverlaySettings> parse_overlays(const std::string& text);
 
 } // namespace pvs::app

@@ -1,5 +1,6 @@
 // pvscope: inspector and command-line tool for visibility culling in classic 3-D worlds.
-// Each subcommand lives in its own cmd_*.cpp; this file only wires them together.
+// Each subcommand lives in its own cmd_*.cpp; this file only wires them together. The inspector
+// window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
 #include "app/cmd_bake.h"
 #include "app/cmd_compare.h"
 #include "app/cmd_stability.h"
@@ -7,6 +8,7 @@
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
 #include "app/cmd_inspect.h"
+#include "app/inspector_launch.h"
 #include "app/cmd_render.h"
 #include "app/cmd_stats.h"
 #include "app/cmd_walk.h"
@@ -29,12 +31,14 @@ int main(int argc, char** argv)
     pvs::app::register_bake_command(app, exit_code);
     pvs::app::register_compare_command(app, exit_code);
     pvs::app::register_stability_command(app, exit_code);
-    pvs::app::register_inspect_command(app, exit_code);
+    // The inspector is another executable (inspector_launch.h): checked here, opened there.
+    pvs::app::register_inspect_command(app, exit_code,
+                                       [argv](const pvs::app::InspectArguments&) { return pvs::app::launch_inspector(argv); });
     std::string zone_path; // `pvscope FILE`: the inspector on FILE
     app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");
 
     CLI11_PARSE(app, argc, argv);
     if (app.get_subcommands().empty())
-        exit_code = pvs::app::run_inspect(zone_path);
+        exit_code = pvs::app::launch_inspector(argv);
     return exit_code;
 }

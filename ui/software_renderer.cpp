@@ -3,18 +3,17 @@
 #include "ui/overlay_lines.h"
 #include "ui/zone_scene.h"
 
+#include "ui/irrlicht_library.h"
+
 // Not <irrlicht.h>: through the scene manager it includes irrXML.h, whose `xmlChar<T>()`
 // constructor declarations are ill-formed in C++20 (GCC rejects them). Only the device, the
-// driver and matrix4 are used, and createDeviceEx is declared below exactly as irrlicht.h does.
+// driver and matrix4 are used; the device comes from irrlicht_library.h (Irrlicht is opened on
+// first use, not linked), so nothing here may name one of Irrlicht's exported symbols.
 #include <IEventReceiver.h>
 #include <IVideoDriver.h>
 #include <IrrlichtDevice.h>
 #include <SIrrCreationParameters.h>
 #include <matrix4.h>
-
-namespace irr {
-extern "C" IRRLICHT_API IrrlichtDevice* IRRCALLCONV createDeviceEx(const SIrrlichtCreationParameters& parameters);
-} // namespace irr
 
 // The implementation is compiled here, with static linkage, so another module that also wants
 // stb_image_write (or links Debian's libstb) cannot collide with it.
@@ -200,7 +199,7 @@ SoftwareRenderer::SoftwareRenderer(uint32_t width, uint32_t height) : impl_(std:
     {
         StdoutSilenced quiet;
         SignalHandlersKept handlers;
-        s.device = irr::createDeviceEx(params);
+        s.device = create_irrlicht_device(params);
     }
     if (!s.device)
         throw std::runtime_error("cannot create Irrlicht's console device with Burning's Video" + s.irrlicht_said());
@@ -265,7 +264,7 @@ Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std
     s.driver->setRenderTarget(s.target, true, true, irr::video::SColor(0, 0, 0, 0));
     s.driver->setTransform(irr::video::ETS_PROJECTION, projection);
     s.driver->setTransform(irr::video::ETS_VIEW, view);
-    s.driver->setTransform(irr::video::ETS_WORLD, irr::core::IdentityMatrix);
+    s.driver->setTransform(irr::video::ETS_WORLD, irr::core::matrix4()); // identity (not Irrlicht's exported IdentityMatrix)
     const ZoneScene::DrawStats drawn = s.scene->draw(visible_regions, mode, region_tints);
     s.driver->setRenderTarget(nullptr, false, false);
 

@@ -1,6 +1,6 @@
 #include "visibility/reference/mesh_tracer.h"
 
-#include <embree3/rtcore.h>
+#include "visibility/reference/embree_library.h"
 
 #include <algorithm>
 #include <glm/geometric.hpp>
@@ -11,6 +11,7 @@
 namespace pvs {
 
 struct MeshTracer::Impl {
+    const EmbreeApi& rtc = embree_api(); // throws when Embree cannot be opened
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     std::vector<uint32_t> triangle_face;  // Embree primitive -> mesh face
@@ -22,9 +23,9 @@ struct MeshTracer::Impl {
     ~Impl()
     {
         if (scene)
-            rtcReleaseScene(scene);
+            rtc.rtcReleaseScene(scene);
         if (device)
-            rtcReleaseDevice(device);
+            rtc.rtcReleaseDevice(device);
     }
 };
 
@@ -43,18 +44,18 @@ MeshTracer::MeshTracer(const Zone& zone) : impl_(std::make_unique<Impl>())
             const glm::vec3& a = mesh.positions[i[0]];
             impl_->triangle_normal.push_back(glm::cross(mesh.positions[i[1]] - a, mesh.positions[i[2]] - a));
         }
-    impl_->device = rtcNewDevice("threads=1"); // callers run their own threads
+    impl_->device = impl_->rtc.rtcNewDevice("threads=1"); // callers run their own threads
     if (!impl_->device)
         throw std::runtime_error("Embree: cannot create a device");
-    impl_->scene = rtcNewScene(impl_->device);
-    rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
-    rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+    impl_->scene = impl_->rtc.rtcNewScene(impl_->device);
+    impl_->rtc.rtcSetSceneFlags(impl_->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
+    impl_->rtc.rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
     if (!indices.empty() && !mesh.positions.empty()) {
-        RTCGeometry geometry = rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        RTCGeometry geometry = impl_->rtc.rtcNewGeometry(impl_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
         // Buffers Embree allocates itself carry the padding its vector loads need.
-        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        auto* vertices = static_cast<float*>(impl_->rtc.rtcSetNewGeometryBuffer(
             geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.positions.size()));
-        auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+        auto* triangles = static_cast<uint32_t*>(impl_->rtc.rtcSetNewGeometryBuffer(
             geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), indices.size() / 3));
         if (!vertices || !triangles)
             throw std::runtime_error("Embree: cannot allocate the mesh buffers");
@@ -62,11 +63,11 @@ MeshTracer::MeshTracer(const Zone& zone) : impl_(std::make_unique<Impl>())
             for (int k = 0; k < 3; ++k)
                 vertices[3 * v + size_t(k)] = mesh.positions[v][k];
         std::copy(indices.begin(), indices.end(), triangles);
-        rtcCommitGeometry(geometry);
-        rtcAttachGeometry(impl_->scene, geometry);
-        rtcReleaseGeometry(geometry);
+        impl_->rtc.rtcCommitGeometry(geometry);
+        impl_->rtc.rtcAttachGeometry(impl_->scene, geometry);
+        impl_->rtc.rtcReleaseGeometry(geometry);
     }
-    rtcCommitScene(impl_->scene);
+    impl_->rtc.rtcCommitScene(impl_->scene);
 }
 
 MeshTracer::~MeshTracer() = default;
@@ -139,7 +140,7 @@ MeshTracer::Hit MeshTracer::Impl::intersect(RTCIntersectContext& context, const 
                                             const glm::vec3& direction, float t_far) const
 {
     RTCRayHit rh = make_ray(origin, direction, t_far);
-    rtcIntersect1(scene, &context, &rh);
+    rtc.rtcIntersect1(scene, &context, &rh);
     Hit hit;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID || rh.hit.primID >= triangle_face.size())
         return hit;
@@ -193,7 +194,7 @@ void MeshTracer::first_hits(const glm::vec3& origin, std::span<const glm::vec3> 
             packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
             packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
         }
-        rtcIntersect8(valid, impl_->scene, &context, &packet);
+        impl_->rtc.rtcIntersect8(valid, impl_->scene, &context, &packet);
         for (size_t i = 0; i < count; ++i) {
             Hit& hit = out[first + i];
             hit = {};
@@ -213,7 +214,7 @@ bool MeshTracer::occluded(const glm::vec3& origin, const glm::vec3& direction, f
 {
     FilterContext context = make_filter_context(impl_->triangle_face, impl_->triangle_normal, filter);
     RTCRay ray = make_ray(origin, direction, t_far).ray;
-    rtcOccluded1(impl_->scene, &context.base, &ray);
+    impl_->rtc.rtcOccluded1(impl_->scene, &context.base, &ray);
     return ray.tfar < 0.0f; // Embree marks an occluded ray with tfar = -inf
 }
 
