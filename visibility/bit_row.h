@@ -20,6 +20,16 @@ inline bool test(std::span<const uint64_t> words, size_t i) { return (words[i >>
 inline void set(std::span<uint64_t> words, size_t i) { words[i >> 6] |= uint64_t{1} << (i & 63); }
 inline void clear(std::span<uint64_t> words, size_t i) { words[i >> 6] &= ~(uint64_t{1} << (i & 63)); }
 
+// Set bits of one word, inline. The build targets baseline x86-64 (no -mpopcnt), where
+// std::popcount is a call into libgcc: hot loops that count a word at a time use this instead.
+constexpr uint32_t popcount(uint64_t x)
+{
+    x = x - ((x >> 1) & 0x5555555555555555u);
+    x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu;
+    return uint32_t((x * 0x0101010101010101u) >> 56);
+}
+
 inline size_t count(std::span<const uint64_t> words)
 {
     size_t total = 0;

@@ -34,7 +34,7 @@ public:
     FlowWorker(const Graph& g, int level)
         : g_(g), level_(level), vis_(g.words, 0), on_stack_(g.leaf_count, 0),
           dists_(point_capacity() + 1), sides_(point_capacity() + 1), b_side_(point_capacity()),
-          ones_(g.words, ~uint64_t{0})
+          ones_(g.words, ~uint64_t{0}), spread_(g.words, 0)
     {
     }
 
@@ -85,6 +85,9 @@ private:
         return clip_winding(in, split, f, dists_.data(), sides_.data());
     }
 
+    // The words [from, to) of a passage row as a dense array p (p[w - from] = word w), valid
+    // until the next call: the row itself when it is wide, else its words spread into spread_.
+    const uint64_t* spread_passage(const PassageRow& row, uint32_t from, uint32_t to);
     // "Nothing new": whether prev.mightsee & test & passage has a bit not in vis_. test is zero
     // outside its runs, so only its runs from first_run on inside [lo, hi) are read; passage is
     // indexed from lo.
@@ -133,6 +136,7 @@ private:
     uint64_t wait_nanos_ = 0;
     const Passages* passages_ = nullptr;
     std::vector<uint64_t> ones_;
+    std::vector<uint64_t> spread_; // a narrow passage row's words, spread out (spread_passage)
     bool target_checks_ = false;
     size_t target_check_count_ = 0;
     size_t target_check_prunes_ = 0;

@@ -12,6 +12,33 @@
 
 namespace pvs::portal_vis {
 
+void encode_passage_row(std::span<const uint64_t> dense, std::vector<uint64_t>& out)
+{
+    uint32_t lo = 0, hi = uint32_t(dense.size());
+    while (lo < hi && dense[lo] == 0)
+        ++lo;
+    while (hi > lo && dense[hi - 1] == 0)
+        --hi;
+    if (lo == hi) { // empty: a narrow row with no word
+        out.push_back(0);
+        return;
+    }
+    if (hi - lo <= kPassageMaskSpan && lo < (uint32_t{1} << 24)) {
+        const size_t header = out.size();
+        out.push_back(0);
+        uint64_t mask = 0;
+        for (uint32_t w = lo; w < hi; ++w)
+            if (dense[w] != 0) {
+                mask |= uint64_t{1} << (w - lo);
+                out.push_back(dense[w]);
+            }
+        out[header] = uint64_t{lo} | mask << 24;
+        return;
+    }
+    out.push_back(kPassageWide | uint64_t{lo} | uint64_t{hi} << 31);
+    out.insert(out.end(), dense.begin() + lo, dense.begin() + hi);
+}
+
 void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<RunRow>& mightsee, RowPool& pool)
 {
     const size_t words = g.words;
@@ -20,9 +47,7 @@ void narrow_mightsee(const Graph& g, const Passages& passages, std::vector<RunRo
         std::fill(reach.begin(), reach.end(), 0);
         bits::set(reach, g.portals[a].leaf);
         for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k) {
-            const PassageRow row = passages.row(a, k);
-            for (size_t w = row.lo; w < row.hi; ++w)
-                reach[w] |= row.words[w - row.lo];
+            passages.row(a, k).or_into(reach.data());
         }
         std::fill(might.begin(), might.end(), 0);
         mightsee[a].or_into(might.data());
@@ -154,14 +179,8 @@ bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, Ro
                     std::fill(mb.begin(), mb.end(), 0);
                     mightsee[g.leaf_portals[g.leaf_first[dest] + k]].or_into(mb.data());
                     worker.passage_row(a, uint32_t(k), ma.data(), mb.data(), dense.data());
-                    uint32_t lo = 0, hi = uint32_t(g.words);
-                    while (lo < hi && dense[lo] == 0)
-                        ++lo;
-                    while (hi > lo && dense[hi - 1] == 0)
-                        --hi;
                     out.start[out.first[a] + k] = uint32_t(packed.size());
-                    packed.push_back(uint64_t{lo} | uint64_t{hi} << 32);
-                    packed.insert(packed.end(), dense.begin() + lo, dense.begin() + hi);
+                    encode_passage_row(dense, packed);
                 }
                 if (total_words.fetch_add(packed.size()) + packed.size() > word_budget) {
                     over_budget.store(true);

@@ -10,6 +10,8 @@
 // nothing visible. Uses the frame's windings as scratch; allocates nothing.
 #include "visibility/portal/flow.h"
 
+#include "visibility/bit_row.h"
+
 #include <bit>
 
 namespace pvs::portal_vis {
@@ -23,11 +25,14 @@ bool FlowWorker::may_add_leaf(const Frame& head)
 {
     Frame& f = *frames_[depth_];
     Frame& prev = *frames_[depth_ - 1]; // the source, pass and plane f was entered with, f's mightsee
+    // Checking more than kTargetCheckLeaves leaves would cost more than the walk it might
+    // save: count them only that far.
     uint32_t unseen = 0;
-    for (uint32_t w = prev.lo; w < prev.hi; ++w)
-        unseen += uint32_t(std::popcount(prev.mightsee[w] & ~vis_[w]));
-    if (unseen > kTargetCheckLeaves)
-        return true; // checking them all would cost more than the walk it might save
+    for (uint32_t w = prev.lo; w < prev.hi; ++w) {
+        unseen += bits::popcount(prev.mightsee[w] & ~vis_[w]);
+        if (unseen > kTargetCheckLeaves)
+            return true;
+    }
     ++target_check_count_;
     bool any_reachable = false;
     for (uint32_t w = prev.lo; w < prev.hi; ++w) {
