@@ -1,7 +1,7 @@
 // Irrlicht opened on first use (irrlicht_library.h).
 #include "ui/irrlicht_library.h"
 
-#include <dlfcn.h>
+#include "visibility/shared_library.h"
 
 #include <stdexcept>
 #include <string>
@@ -23,17 +23,11 @@ struct LoadedIrrlicht {
 
 LoadedIrrlicht load()
 {
+    constexpr const char* kWhat = "Irrlicht";
     LoadedIrrlicht loaded;
-    void* library = dlopen(PVSCOPE_IRRLICHT_SONAME, RTLD_NOW | RTLD_LOCAL);
-    if (!library) {
-        const char* why = dlerror();
-        loaded.error = std::string("cannot open Irrlicht (" PVSCOPE_IRRLICHT_SONAME "; Debian package libirrlicht1.8): ") +
-                       (why ? why : "unknown error");
-        return loaded;
-    }
-    loaded.create = reinterpret_cast<CreateDeviceEx>(dlsym(library, "createDeviceEx"));
-    if (!loaded.create)
-        loaded.error = "Irrlicht (" PVSCOPE_IRRLICHT_SONAME ") has no createDeviceEx";
+    if (void* library = open_shared_library(PVSCOPE_IRRLICHT_SONAME, kWhat, "libirrlicht1.8", loaded.error))
+        loaded.create = reinterpret_cast<CreateDeviceEx>(
+            shared_library_symbol(library, PVSCOPE_IRRLICHT_SONAME, kWhat, "createDeviceEx", loaded.error));
     return loaded;
 }
 

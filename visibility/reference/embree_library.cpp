@@ -1,9 +1,8 @@
 // Embree 3 opened on first use (embree_library.h).
 #include "visibility/reference/embree_library.h"
 
-#include <dlfcn.h>
+#include "visibility/shared_library.h"
 
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -14,33 +13,23 @@
 namespace pvs {
 namespace {
 
+constexpr const char* kWhat = "Embree 3";
+
 struct LoadedEmbree {
     EmbreeApi api;
     std::string error; // empty when api is complete
 };
 
-template <class Pointer>
-bool resolve(void* library, const char* name, Pointer& out, std::string& error)
-{
-    out = reinterpret_cast<Pointer>(dlsym(library, name));
-    if (!out)
-        error = std::string("Embree (" PVSCOPE_EMBREE_SONAME ") has no ") + name;
-    return out != nullptr;
-}
-
 LoadedEmbree load()
 {
     LoadedEmbree loaded;
-    // RTLD_LOCAL: Embree's symbols (and TBB's, which it brings) stay out of the global namespace.
-    void* library = dlopen(PVSCOPE_EMBREE_SONAME, RTLD_NOW | RTLD_LOCAL);
-    if (!library) {
-        const char* why = dlerror();
-        loaded.error = std::string("cannot open Embree 3 (" PVSCOPE_EMBREE_SONAME "; Debian package libembree3-3): ") +
-                       (why ? why : "unknown error");
+    void* library = open_shared_library(PVSCOPE_EMBREE_SONAME, kWhat, "libembree3-3", loaded.error);
+    if (!library)
         return loaded;
-    }
-#define PVSCOPE_EMBREE_RESOLVE(name) \
-    if (!resolve(library, #name, loaded.api.name, loaded.error)) \
+#define PVSCOPE_EMBREE_RESOLVE(name)                                                                       \
+    loaded.api.name = reinterpret_cast<decltype(loaded.api.name)>(                                         \
+        shared_library_symbol(library, PVSCOPE_EMBREE_SONAME, kWhat, #name, loaded.error));                \
+    if (!loaded.api.name)                                                                                  \
         return loaded;
     PVSCOPE_EMBREE_FUNCTIONS(PVSCOPE_EMBREE_RESOLVE)
 #undef PVSCOPE_EMBREE_RESOLVE
