@@ -25,17 +25,27 @@ bool sphere_beyond(const DPlane& plane, double d_origin, const Vec& o, double r,
 
 } // namespace
 
-bool portal_might_see(const Graph& g, const DirectedPortal& p, const DirectedPortal& t)
+std::vector<TestedPortal> tested_portals(const Graph& g)
+{
+    std::vector<TestedPortal> table(g.leaf_portals.size());
+    for (size_t k = 0; k < table.size(); ++k) {
+        const DirectedPortal& t = g.portals[g.leaf_portals[k]];
+        table[k] = {t.plane, t.origin, t.radius};
+    }
+    return table;
+}
+
+bool portal_might_see(const Graph& g, const DirectedPortal& p, const TestedPortal& tested, const DirectedPortal& t)
 {
     const Vec* pp = &g.points[p.first_point];
-    const Vec* tp = &g.points[t.first_point];
 
     // 1. t is not entirely behind p: a vertex in front, or all on p's plane (coplanar).
-    double d = p.plane.distance(t.origin);
-    if (d < -t.radius)
+    double d = p.plane.distance(tested.origin);
+    if (d < -tested.radius)
         return false;
     bool t_coplanar = false;
-    if (!sphere_beyond(p.plane, d, t.origin, t.radius, kOnEpsilon)) {
+    if (!sphere_beyond(p.plane, d, tested.origin, tested.radius, kOnEpsilon)) {
+        const Vec* tp = &g.points[t.first_point];
         uint32_t not_behind = 0, j = 0;
         for (; j < t.point_count; ++j) {
             d = p.plane.distance(tp[j]);
@@ -50,14 +60,14 @@ bool portal_might_see(const Graph& g, const DirectedPortal& p, const DirectedPor
         }
     }
     // 2. p is not entirely in front of t: a vertex behind t's plane, or all on it.
-    d = t.plane.distance(p.origin);
+    d = tested.plane.distance(p.origin);
     if (d > p.radius)
         return false;
     bool p_coplanar = false;
-    if (!sphere_beyond(t.plane.flipped(), -d, p.origin, p.radius, kOnEpsilon)) {
+    if (!sphere_beyond(tested.plane.flipped(), -d, p.origin, p.radius, kOnEpsilon)) {
         uint32_t not_front = 0, j = 0;
         for (; j < p.point_count; ++j) {
-            d = t.plane.distance(pp[j]);
+            d = tested.plane.distance(pp[j]);
             not_front += d < kOnEpsilon;
             if (d < -kOnEpsilon)
                 break;
@@ -69,12 +79,13 @@ bool portal_might_see(const Graph& g, const DirectedPortal& p, const DirectedPor
         }
     }
     // 3. Coplanar exception used: reject a portal facing back at p (p's twin, among others).
-    if ((t_coplanar || p_coplanar) && glm::dot(p.plane.normal, t.plane.normal) < kCoplanarFacing)
+    if ((t_coplanar || p_coplanar) && glm::dot(p.plane.normal, tested.plane.normal) < kCoplanarFacing)
         return false;
     return true;
 }
 
-uint32_t base_portal_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& stack, uint64_t* mightsee)
+uint32_t base_portal_vis(const Graph& g, const std::vector<TestedPortal>& tested, uint32_t pi,
+                         std::vector<uint32_t>& stack, uint64_t* mightsee)
 {
     const std::span<uint64_t> row(mightsee, g.words);
     std::fill(row.begin(), row.end(), 0);
@@ -89,7 +100,7 @@ uint32_t base_portal_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& sta
         for (uint32_t k = g.leaf_first[leaf]; k < g.leaf_first[leaf + 1]; ++k) {
             const uint32_t ti = g.leaf_portals[k];
             const uint32_t dest = g.leaf_portal_dest[k];
-            if (ti == pi || bits::test(row, dest) || !portal_might_see(g, p, g.portals[ti]))
+            if (ti == pi || bits::test(row, dest) || !portal_might_see(g, p, tested[k], g.portals[ti]))
                 continue;
             bits::set(row, dest);
             ++count;
