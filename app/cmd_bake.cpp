@@ -56,6 +56,8 @@ struct Input {
     std::vector<uint32_t> sector_of_subsector;
     uint32_t sector_count = 0;
 
+    bool drawing_dropped = false; // mesh and pixels freed for the bake (drop_what_a_portal_bake_does_not_read)
+
     Input(InputFormat f, Zone z) : format(f), zone(std::move(z)) {}
 };
 
@@ -194,17 +196,19 @@ Input load_input(const BakeOptions& o)
     throw FileError(path, 0, "bake writes Quake BSP 29, EverQuest S3D, Doom GL_PVS and OBJ + .hepvs only");
 }
 
-// A portal bake reads the tree, the regions and their flags, never the faces; and a BSP is
-// written back from the file's own bytes, not from the zone (an S3D is written from the zone, a
-// Doom map keeps its sectors: only a Quake map can let go). So a Quake map's render mesh and
-// textures (1.3 MB on e1m1, more than a tenth of the bake's peak) are freed before the bake.
+// A portal bake reads the tree, the regions and their flags, never the faces. So a Quake map's
+// and an EverQuest zone's render mesh and textures (1.3 MB of e1m1, more than a tenth of the
+// bake's peak) are freed before the bake: a BSP is written back from the file's own bytes, and
+// an S3D, which is written again from the whole zone, is read again for that (write_output).
+// A Doom map keeps its sectors (its writer needs them; they are small).
 void drop_what_a_portal_bake_does_not_read(Input& in)
 {
-    if (in.format != InputFormat::QuakeBsp)
+    if (in.format != InputFormat::QuakeBsp && in.format != InputFormat::EqS3d)
         return;
     in.zone.mesh = Mesh{};
     for (Material& material : in.zone.materials)
         material.pixels = {};
+    in.drawing_dropped = true;
     // Freed pages in the middle of the heap stay resident: give them back now.
     malloc_trim(0);
 }
@@ -319,8 +323,16 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::
         write_doom_output(o, in, pvs, err);
         return;
     }
+    // An S3D is written again from the whole zone: read it again if the bake let its drawing go.
+    std::optional<Zone> reloaded;
+    if (in.format == InputFormat::EqS3d && in.drawing_dropped) {
+        reloaded = eq::load_eq_zone(read_whole_file(o.input), o.input);
+        if (reloaded->region_count() != in.zone.region_count())
+            throw FileError(o.input, 0, "changed during the bake: " + std::to_string(reloaded->region_count()) +
+                                            " regions now, " + std::to_string(in.zone.region_count()) + " when it was read");
+    }
     // The other formats through the writer the inspector's Save uses too.
-    const PvsWriteback written = write_pvs_in_zone_format(in.zone, ZoneLoadOptions{}, pvs, o.output);
+    const PvsWriteback written = write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output);
     for (const std::string& note : written.notes)
         std::fprintf(err, "note: %s\n", note.c_str());
     std::fprintf(err, "%s\n", written.summary.c_str());

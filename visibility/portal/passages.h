@@ -5,8 +5,9 @@
 // the graph, the level and the mightsee rows, whatever the threads), then narrows each
 // portal's mightsee to its destination plus its passages' rows (narrow_mightsee). It returns
 // false, with `out` empty and mightsee untouched, when there are no portals, when the rows
-// would take more than `budget` bytes (decided by their total size alone, not by timing), or
-// when cancelled. The rows are conservative: every leaf a line through a and b reaches is set.
+// would take more than `budget` bytes (decided by their total size alone, not by timing; the
+// rows of every 64th portal, built first, turn passages down when they extrapolate to more than
+// twice the budget), or when cancelled. The rows are conservative: every leaf a line through a and b reaches is set.
 // Passages::row(a, k) reads the row of a and the k-th portal leaving a's destination (the
 // order of Graph::leaf_portals); the flow ANDs it into the child frame's mightsee.
 #pragma once

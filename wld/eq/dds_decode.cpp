@@ -1,8 +1,14 @@
 #include "wld/eq/dds_decode.h"
 
+#include "visibility/shared_library.h"
+
 #include <squish.h>
 
 #include <cstring>
+
+#ifndef PVSCOPE_SQUISH_SONAME
+#error "PVSCOPE_SQUISH_SONAME (libsquish's soname) comes from wld/CMakeLists.txt"
+#endif
 
 namespace pvs {
 
@@ -24,6 +30,29 @@ std::string printable(std::span<const uint8_t> four)
     for (const uint8_t c : four)
         out += (c >= 0x20 && c < 0x7F) ? char(c) : '?';
     return out;
+}
+
+// squish::DecompressImage(rgba, width, height, blocks, flags), from libsquish opened on first use
+// (not linked: it brings OpenMP's runtime into every process, and only an EverQuest zone with
+// DDS textures decodes one). By its mangled name: the library exports C++ only.
+using DecompressImage = void (*)(squish::u8*, int, int, const void*, int);
+
+struct LoadedSquish {
+    DecompressImage decompress = nullptr;
+    std::string error;
+};
+
+const LoadedSquish& squish_library()
+{
+    static const LoadedSquish loaded = [] {
+        constexpr const char* kWhat = "libsquish";
+        LoadedSquish out;
+        if (void* library = open_shared_library(PVSCOPE_SQUISH_SONAME, kWhat, "libsquish0", out.error))
+            out.decompress = reinterpret_cast<DecompressImage>(shared_library_symbol(
+                library, PVSCOPE_SQUISH_SONAME, kWhat, "_ZN6squish15DecompressImageEPhiiPKvi", out.error));
+        return out;
+    }();
+    return loaded;
 }
 
 // The squish flag of the FourCC at offset 84; 0 when it is not one we decode.
@@ -83,11 +112,14 @@ std::optional<RgbaImage> decode_dds(std::span<const uint8_t> bytes, std::string*
                       std::to_string(width) + "x" + std::to_string(height) + " needs " + std::to_string(data_bytes) +
                           " bytes of blocks after offset 128, the file has " +
                           std::to_string(bytes.size() - kDdsHeaderBytes));
+    const LoadedSquish& squish = squish_library();
+    if (!squish.decompress)
+        return refuse(why, 0, squish.error);
     RgbaImage image;
     image.width = width;
     image.height = height;
     image.rgba.resize(size_t{width} * height * 4);
-    squish::DecompressImage(image.rgba.data(), int(width), int(height), bytes.data() + kDdsHeaderBytes, format);
+    squish.decompress(image.rgba.data(), int(width), int(height), bytes.data() + kDdsHeaderBytes, format);
     return image;
 }
 
