@@ -190,7 +190,7 @@ Input load_input(const BakeOptions& o)
     const std::vector<uint8_t> bytes = read_whole_file(path);
     if (quake::looks_like_bsp29(bytes))
         return Input(InputFormat::QuakeBsp, quake::load_bsp29(bytes, path));
-    if (eq::looks_like_pfs(bytes)) // written again from the zone, textures and all: kept whole
+    if (eq::looks_like_pfs(bytes))
         return Input(InputFormat::EqS3d, eq::load_eq_zone(bytes, path));
     load_zone(path); // throws the loader's message for formats it recognises but cannot read
     throw FileError(path, 0, "bake writes Quake BSP 29, EverQuest S3D, Doom GL_PVS and OBJ + .hepvs only");
