@@ -198,8 +198,9 @@ Input load_input(const BakeOptions& o)
 
 // A portal bake reads the tree, the regions and their flags, never the faces. So a Quake map's
 // and an EverQuest zone's render mesh and textures (1.3 MB of e1m1, more than a tenth of the
-// bake's peak) are freed before the bake: a BSP is written back from the file's own bytes, and
-// an S3D, which is written again from the whole zone, is read again for that (write_output).
+// bake's peak; 16 MB of the 5000-room zone's 417) are freed before the bake: a BSP is written
+// back from the file's own bytes, and an S3D, which is written again from the whole zone, is
+// read again for that (write_output: 0.2 s at 5000 rooms, after the bake's arrays are gone).
 // A Doom map keeps its sectors (its writer needs them; they are small).
 void drop_what_a_portal_bake_does_not_read(Input& in)
 {

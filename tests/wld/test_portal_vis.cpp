@@ -15,6 +15,8 @@
 #include "tests/support/test_data.h"
 #include "tests/support/visdemo_rows.h"
 #include "visibility/bit_row.h"
+#include "visibility/portal/base_vis.h"
+#include "visibility/portal/passages.h"
 #include "visibility/portal/portalize.h"
 #include "wld/quake/prt_file.h"
 
@@ -437,6 +439,43 @@ TEST(PortalVis, PassagesChangeNoRowOnARealMap)
     std::printf("[ %-7s ] Full with passages %.3f s (%zu pairs, %.3f s to build), without %.3f s\n",
                 test::param_name(kSpeedUpMap).c_str(), b->full_report.seconds, b->full_report.passage_pairs,
                 b->full_report.passage_seconds, report.seconds);
+}
+
+// The flow asks "is the target's leaf in the passage row of (the portal it came in by, the
+// target)" as "is that row non-empty" (flow.cpp): a passage row holds its second portal's leaf
+// unless it is empty. Checked on every pair of a real map, against the rows the build made.
+TEST(PortalVis, EveryNonEmptyPassageRowHoldsItsSecondPortalsLeaf)
+{
+    SHARED_DATA_OR_SKIP(path, kSpeedUpMap);
+    const QuakeBake* b = quake_bake(kSpeedUpMap);
+    ASSERT_NE(b, nullptr);
+    const portal_vis::Graph g = portal_vis::build_graph(b->portals, b->regions);
+    std::vector<portal_vis::RunRow> mightsee(g.portals.size());
+    portal_vis::RowPool pool, narrowed;
+    const std::vector<portal_vis::TestedPortal> tested = portal_vis::tested_portals(g);
+    std::vector<uint32_t> stack;
+    std::vector<uint64_t> dense(g.words), encoded;
+    for (uint32_t i = 0; i < g.portals.size(); ++i) {
+        portal_vis::base_portal_vis(g, tested, i, stack, dense.data());
+        portal_vis::encode_runs(dense, encoded);
+        mightsee[i] = pool.append(encoded);
+    }
+    portal_vis::Passages passages;
+    std::atomic<bool> cancel{false}, user_cancel{false};
+    ASSERT_TRUE(portal_vis::build_passages(g, 4, mightsee, narrowed, size_t{1} << 30, 2, cancel, user_cancel,
+                                           [](double) { return true; }, passages));
+    size_t empty = 0;
+    for (uint32_t a = 0; a < g.portals.size(); ++a)
+        for (size_t k = 0; k < passages.first[a + 1] - passages.first[a]; ++k) {
+            const portal_vis::PassageRow row = passages.row(a, k);
+            const uint32_t b_leaf = g.portals[g.leaf_portals[g.leaf_first[g.portals[a].leaf] + k]].leaf;
+            std::vector<uint64_t> bits(g.words, 0);
+            row.or_into(bits.data());
+            ASSERT_EQ(!row.empty(), bits::test(bits, b_leaf)) << "portal " << a << " pair " << k;
+            empty += row.empty();
+        }
+    EXPECT_GT(empty, 0u) << "some pairs (a portal and its twin, at least) have empty rows";
+    EXPECT_LT(empty, passages.pairs());
 }
 
 // Target checks only remove bits (they prune walks and narrow mightsee; every frame the flow

@@ -166,10 +166,8 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
             const PassageRow row = passages_->row(f.entry, f.cursor - 1 - g_.leaf_first[f.leaf]);
             if (row.empty())
                 continue;
-            lo = std::max(lo, row.lo);
+            lo = std::max(lo, row.lo); // both ranges hold q's leaf's word: not empty
             hi = std::min(hi, row.hi);
-            if (lo >= hi)
-                continue; // nothing of the row inside prev's words
             passage = spread_passage(row, lo, hi);
         }
         const RunRow test = prune_rows.row(qi, rank, wait_nanos_);

@@ -139,28 +139,42 @@ namespace {
 
 constexpr uint32_t kSampleStride = 64; // every 64th portal's rows estimate the whole
 
+// One builder's scratch and the loop over a portal's pairs, shared by the sample and the build.
+struct RowBuilder {
+    FlowWorker worker;
+    std::vector<uint64_t> dense, ma, mb;
+
+    RowBuilder(const Graph& g, int level) : worker(g, level), dense(g.words), ma(g.words), mb(g.words) {}
+
+    // Appends the encoded rows of directed portal a's `pairs` pairs to `packed`; starts[k], when
+    // given, receives the offset in `packed` of pair k's row.
+    void append_rows(const Graph& g, const std::vector<RunRow>& mightsee, uint32_t a, size_t pairs,
+                     std::vector<uint64_t>& packed, uint32_t* starts)
+    {
+        std::fill(ma.begin(), ma.end(), 0);
+        mightsee[a].or_into(ma.data());
+        const uint32_t first_leaving = g.leaf_first[g.portals[a].leaf];
+        for (size_t k = 0; k < pairs; ++k) {
+            std::fill(mb.begin(), mb.end(), 0);
+            mightsee[g.leaf_portals[first_leaving + k]].or_into(mb.data());
+            worker.passage_row(a, uint32_t(k), ma.data(), mb.data(), dense.data());
+            if (starts)
+                starts[k] = uint32_t(packed.size());
+            encode_passage_row(dense, packed);
+        }
+    }
+};
+
 // The words the rows of every kSampleStride-th portal take, times kSampleStride: an estimate of
 // all the rows' words from a fixed sample (built on this thread, so it does not depend on the
 // threads).
 size_t sampled_row_words(const Graph& g, int level, const std::vector<RunRow>& mightsee, const std::vector<size_t>& first)
 {
-    FlowWorker worker(g, level);
-    std::vector<uint64_t> dense(g.words), packed, ma(g.words), mb(g.words);
-    size_t words = 0;
-    for (uint32_t a = 0; a < uint32_t(g.portals.size()); a += kSampleStride) {
-        std::fill(ma.begin(), ma.end(), 0);
-        mightsee[a].or_into(ma.data());
-        const uint32_t dest = g.portals[a].leaf;
-        packed.clear();
-        for (size_t k = 0; k < first[a + 1] - first[a]; ++k) {
-            std::fill(mb.begin(), mb.end(), 0);
-            mightsee[g.leaf_portals[g.leaf_first[dest] + k]].or_into(mb.data());
-            worker.passage_row(a, uint32_t(k), ma.data(), mb.data(), dense.data());
-            encode_passage_row(dense, packed);
-        }
-        words += packed.size();
-    }
-    return words * kSampleStride;
+    RowBuilder builder(g, level);
+    std::vector<uint64_t> packed;
+    for (uint32_t a = 0; a < uint32_t(g.portals.size()); a += kSampleStride)
+        builder.append_rows(g, mightsee, a, first[a + 1] - first[a], packed, nullptr);
+    return packed.size() * kSampleStride;
 }
 
 } // namespace
@@ -203,23 +217,14 @@ bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, Ro
     run_parallel(
         threads,
         [&](unsigned t) {
-            FlowWorker worker(g, level);
-            std::vector<uint64_t> dense(g.words), packed, ma(g.words), mb(g.words);
+            RowBuilder builder(g, level);
+            std::vector<uint64_t> packed;
             while (!cancel.load(std::memory_order_relaxed) && !over_budget.load(std::memory_order_relaxed)) {
                 const uint32_t a = next_portal.fetch_add(1);
                 if (a >= n)
                     break;
                 packed.clear();
-                std::fill(ma.begin(), ma.end(), 0);
-                mightsee[a].or_into(ma.data());
-                const uint32_t dest = g.portals[a].leaf;
-                for (size_t k = 0; k < out.first[a + 1] - out.first[a]; ++k) {
-                    std::fill(mb.begin(), mb.end(), 0);
-                    mightsee[g.leaf_portals[g.leaf_first[dest] + k]].or_into(mb.data());
-                    worker.passage_row(a, uint32_t(k), ma.data(), mb.data(), dense.data());
-                    out.start[out.first[a] + k] = uint32_t(packed.size());
-                    encode_passage_row(dense, packed);
-                }
+                builder.append_rows(g, mightsee, a, out.first[a + 1] - out.first[a], packed, &out.start[out.first[a]]);
                 if (total_words.fetch_add(packed.size()) + packed.size() > word_budget) {
                     over_budget.store(true);
                     break;

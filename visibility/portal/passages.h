@@ -62,22 +62,6 @@ struct PassageRow {
         return r;
     }
     bool empty() const { return lo == hi; }
-    bool test(uint32_t leaf) const
-    {
-        const uint32_t w = leaf >> 6;
-        if (w < lo || w >= hi)
-            return false;
-        uint64_t word;
-        if (wide) {
-            word = words[w - lo];
-        } else {
-            const uint32_t j = w - lo;
-            if (((mask >> j) & 1u) == 0)
-                return false;
-            word = words[bits::popcount(mask & ((uint64_t{1} << j) - 1))];
-        }
-        return ((word >> (leaf & 63)) & 1u) != 0;
-    }
     // A narrow row's words inside [from, to), a range inside [lo, hi): bit i of present(from, to)
     // is set when word from + i is stored, and the stored words, in order, start at
     // stored_from(from).
