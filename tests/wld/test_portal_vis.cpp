@@ -452,11 +452,11 @@ TEST(PortalVis, EveryNonEmptyPassageRowHoldsItsSecondPortalsLeaf)
     const portal_vis::Graph g = portal_vis::build_graph(b->portals, b->regions);
     std::vector<portal_vis::RunRow> mightsee(g.portals.size());
     portal_vis::RowPool pool, narrowed;
-    const std::vector<portal_vis::TestedPortal> tested = portal_vis::tested_portals(g);
+    const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
     std::vector<uint32_t> stack;
     std::vector<uint64_t> dense(g.words), encoded;
     for (uint32_t i = 0; i < g.portals.size(); ++i) {
-        portal_vis::base_portal_vis(g, tested, i, stack, dense.data());
+        portal_vis::base_portal_vis(g, tables, i, stack, dense.data());
         portal_vis::encode_runs(dense, encoded);
         mightsee[i] = pool.append(encoded);
     }

@@ -25,26 +25,16 @@ bool sphere_beyond(const DPlane& plane, double d_origin, const Vec& o, double r,
 
 } // namespace
 
-std::vector<TestedPortal> tested_portals(const Graph& g)
-{
-    std::vector<TestedPortal> table(g.leaf_portals.size());
-    for (size_t k = 0; k < table.size(); ++k) {
-        const DirectedPortal& t = g.portals[g.leaf_portals[k]];
-        table[k] = {t.plane, t.origin, t.radius};
-    }
-    return table;
-}
-
-bool portal_might_see(const Graph& g, const DirectedPortal& p, const TestedPortal& tested, const DirectedPortal& t)
+bool portal_might_see(const Graph& g, const DirectedPortal& p, const DirectedPortal& t)
 {
     const Vec* pp = &g.points[p.first_point];
 
     // 1. t is not entirely behind p: a vertex in front, or all on p's plane (coplanar).
-    double d = p.plane.distance(tested.origin);
-    if (d < -tested.radius)
+    double d = p.plane.distance(t.origin);
+    if (d < -t.radius)
         return false;
     bool t_coplanar = false;
-    if (!sphere_beyond(p.plane, d, tested.origin, tested.radius, kOnEpsilon)) {
+    if (!sphere_beyond(p.plane, d, t.origin, t.radius, kOnEpsilon)) {
         const Vec* tp = &g.points[t.first_point];
         uint32_t not_behind = 0, j = 0;
         for (; j < t.point_count; ++j) {
@@ -60,14 +50,14 @@ bool portal_might_see(const Graph& g, const DirectedPortal& p, const TestedPorta
         }
     }
     // 2. p is not entirely in front of t: a vertex behind t's plane, or all on it.
-    d = tested.plane.distance(p.origin);
+    d = t.plane.distance(p.origin);
     if (d > p.radius)
         return false;
     bool p_coplanar = false;
-    if (!sphere_beyond(tested.plane.flipped(), -d, p.origin, p.radius, kOnEpsilon)) {
+    if (!sphere_beyond(t.plane.flipped(), -d, p.origin, p.radius, kOnEpsilon)) {
         uint32_t not_front = 0, j = 0;
         for (; j < p.point_count; ++j) {
-            d = tested.plane.distance(pp[j]);
+            d = t.plane.distance(pp[j]);
             not_front += d < kOnEpsilon;
             if (d < -kOnEpsilon)
                 break;
@@ -79,32 +69,45 @@ bool portal_might_see(const Graph& g, const DirectedPortal& p, const TestedPorta
         }
     }
     // 3. Coplanar exception used: reject a portal facing back at p (p's twin, among others).
-    if ((t_coplanar || p_coplanar) && glm::dot(p.plane.normal, tested.plane.normal) < kCoplanarFacing)
+    if ((t_coplanar || p_coplanar) && glm::dot(p.plane.normal, t.plane.normal) < kCoplanarFacing)
         return false;
     return true;
 }
 
-uint32_t base_portal_vis(const Graph& g, const std::vector<TestedPortal>& tested, uint32_t pi,
+uint32_t base_portal_vis(const Graph& g, const BaseVisTables& tables, uint32_t pi,
                          std::vector<uint32_t>& stack, uint64_t* mightsee)
 {
     const std::span<uint64_t> row(mightsee, g.words);
     std::fill(row.begin(), row.end(), 0);
     const DirectedPortal& p = g.portals[pi];
+    const SourcePortal source(g, tables, pi);
     uint32_t count = 1;
-    bits::set(row, p.leaf);
+    bits::set(row, p.leaf); // p itself leads there: the mark skips it
     stack.clear();
-    stack.push_back(p.leaf);
+    stack.push_back(tables.leaf_slot[p.leaf]);
     while (!stack.empty()) {
-        const uint32_t leaf = stack.back();
+        const FloodSlot* header = &tables.slots[stack.back()];
         stack.pop_back();
-        for (uint32_t k = g.leaf_first[leaf]; k < g.leaf_first[leaf + 1]; ++k) {
-            const uint32_t ti = g.leaf_portals[k];
-            const uint32_t dest = g.leaf_portal_dest[k];
-            if (ti == pi || bits::test(row, dest) || !portal_might_see(g, p, tested[k], g.portals[ti]))
+        const uint32_t first_entry = header->slot;
+        int leaf_in_front = -1; // asked once per leaf, when a portal needs it
+        for (uint32_t j = 0; j < header->leaf; ++j) {
+            const FloodSlot& t = header[1 + j];
+            if (bits::test(row, t.leaf))
                 continue;
-            bits::set(row, dest);
+            if (leaf_in_front < 0)
+                leaf_in_front = source.leaf_in_front(tables, *header);
+            const size_t k = first_entry + j;
+            const Verdict verdict = quick_verdict(tables, source, t, k, leaf_in_front != 0);
+            if (verdict == Verdict::kCannotSee ||
+                (verdict == Verdict::kUndecided && !portal_might_see(g, p, g.portals[g.leaf_portals[k]])))
+                continue;
+            bits::set(row, t.leaf);
             ++count;
-            stack.push_back(dest);
+            stack.push_back(t.slot);
+            // Its run is read soon (the stack is last in, first out): start loading it now.
+            const char* run = reinterpret_cast<const char*>(&tables.slots[t.slot]);
+            __builtin_prefetch(run);
+            __builtin_prefetch(run + 64);
         }
     }
     return count;

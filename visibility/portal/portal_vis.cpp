@@ -74,7 +74,7 @@ struct Bake {
 bool run_base_vis(Bake& b, bool full)
 {
     std::atomic<uint32_t> next{0}, done{0};
-    const std::vector<TestedPortal> tested = tested_portals(b.g); // freed when base vis ends
+    const BaseVisTables tables = base_vis_tables(b.g); // freed when base vis ends
     run_parallel(
         b.threads,
         [&](unsigned t) {
@@ -85,7 +85,7 @@ bool run_base_vis(Bake& b, bool full)
                 const uint32_t i = next.fetch_add(1);
                 if (i >= b.n)
                     break;
-                b.nummightsee[i] = base_portal_vis(b.g, tested, i, stack, dense.data());
+                b.nummightsee[i] = base_portal_vis(b.g, tables, i, stack, dense.data());
                 encode_runs(dense, encoded);
                 b.mightsee[i] = b.might_pools[t].append(encoded);
                 done.fetch_add(1, std::memory_order_relaxed);

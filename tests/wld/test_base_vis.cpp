@@ -1,0 +1,177 @@
+// Base vis's float tables (visibility/portal/base_vis.h):
+//  1. quick_verdict answers only where the floats make it certain, never against the exact
+//     test portal_might_see, on every pair of a generated zone (coplanar and edge-sharing
+//     portals by the thousand) and of a real map, and it decides nearly all of them (else the
+//     tables would be slower than the doubles they stand in for);
+//  2. base_portal_vis gives the rows of a plain flood through portal_might_see, written here
+//     on the graph alone (no tables, no float), on the same zones.
+#include "visibility/portal/base_vis.h"
+
+#include "tests/support/test_data.h"
+#include "visibility/bit_row.h"
+#include "visibility/portal/portalize.h"
+#include "wld/gen/generate_zone.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace pvs {
+namespace {
+
+using portal_vis::Graph;
+using portal_vis::Verdict;
+
+struct Portals {
+    PortalSet set;
+    uint32_t regions = 0;
+};
+
+Portals generated_portals(int rooms, uint64_t seed)
+{
+    const Zone zone = gen::generate_zone({rooms, seed, 32.0f, false});
+    return {build_zone_portals(zone), uint32_t(zone.region_count())};
+}
+
+// Sanitizer builds ask fewer source portals (every `stride`-th); optimised builds ask all.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr uint32_t kStride = 7;
+#else
+constexpr uint32_t kStride = 1;
+#endif
+
+struct VerdictCounts {
+    size_t pairs = 0, decided = 0, might_see = 0, cannot_see = 0, contradicted = 0;
+};
+
+// Every (p, t) pair with p != t: the float verdict against the exact test.
+VerdictCounts check_every_pair(const Graph& g, const portal_vis::BaseVisTables& tables)
+{
+    VerdictCounts counts;
+    for (uint32_t pi = 0; pi < g.portals.size(); pi += kStride) {
+        const portal_vis::SourcePortal source(g, tables, pi);
+        for (uint32_t leaf = 0; leaf < g.leaf_count; ++leaf) {
+            const portal_vis::FloodSlot* header = &tables.slots[tables.leaf_slot[leaf]];
+            const bool in_front = source.leaf_in_front(tables, *header);
+            for (uint32_t j = 0; j < header->leaf; ++j) {
+                const size_t k = header->slot + j;
+                const uint32_t ti = g.leaf_portals[k];
+                if (ti == pi)
+                    continue;
+                const Verdict verdict = portal_vis::quick_verdict(tables, source, header[1 + j], k, in_front);
+                const bool exact = portal_vis::portal_might_see(g, g.portals[pi], g.portals[ti]);
+                ++counts.pairs;
+                if (verdict == Verdict::kUndecided)
+                    continue;
+                ++counts.decided;
+                (verdict == Verdict::kMightSee ? counts.might_see : counts.cannot_see) += 1;
+                if ((verdict == Verdict::kMightSee) != exact && counts.contradicted++ < 5)
+                    ADD_FAILURE() << "portal " << pi << " against " << ti << ": float says "
+                                  << (verdict == Verdict::kMightSee ? "might see" : "cannot see") << ", exact "
+                                  << exact;
+            }
+        }
+    }
+    return counts;
+}
+
+void expect_verdicts_agree(const Portals& portals, const std::string& name, double min_decided)
+{
+    const Graph g = portal_vis::build_graph(portals.set, portals.regions);
+    const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
+    ASSERT_GT(tables.slack, 0.0);
+    ASSERT_LT(tables.slack, portal_vis::kOnEpsilon / 2) << "points on a plane could not be decided in floats";
+    const VerdictCounts c = check_every_pair(g, tables);
+    EXPECT_EQ(c.contradicted, 0u);
+    EXPECT_GT(c.might_see, 0u);
+    EXPECT_GT(c.cannot_see, 0u);
+    const double decided = double(c.decided) / double(c.pairs);
+    EXPECT_GE(decided, min_decided);
+    std::printf("[ %-7s ] %zu directed portals, %zu pairs asked: %.2f %% decided in floats (%zu might see, "
+                "%zu cannot), slack %.4f\n",
+                name.c_str(), g.portals.size(), c.pairs, 100.0 * decided, c.might_see, c.cannot_see, tables.slack);
+}
+
+// A flood from p's destination through every portal portal_might_see passes: the definition of
+// mightsee (base_vis.h), on the graph's own arrays.
+std::vector<uint64_t> plain_flood(const Graph& g, uint32_t pi)
+{
+    std::vector<uint64_t> row(g.words, 0);
+    const portal_vis::DirectedPortal& p = g.portals[pi];
+    bits::set(row, p.leaf);
+    std::vector<uint32_t> todo{p.leaf};
+    while (!todo.empty()) {
+        const uint32_t leaf = todo.back();
+        todo.pop_back();
+        for (uint32_t k = g.leaf_first[leaf]; k < g.leaf_first[leaf + 1]; ++k) {
+            const uint32_t ti = g.leaf_portals[k];
+            const uint32_t dest = g.portals[ti].leaf;
+            if (ti != pi && !bits::test(row, dest) && portal_vis::portal_might_see(g, p, g.portals[ti])) {
+                bits::set(row, dest);
+                todo.push_back(dest);
+            }
+        }
+    }
+    return row;
+}
+
+void expect_rows_of_plain_flood(const Portals& portals)
+{
+    const Graph g = portal_vis::build_graph(portals.set, portals.regions);
+    const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
+    std::vector<uint32_t> stack;
+    std::vector<uint64_t> row(g.words);
+    size_t differing = 0, bits_total = 0;
+    for (uint32_t pi = 0; pi < g.portals.size(); ++pi) {
+        const uint32_t count = portal_vis::base_portal_vis(g, tables, pi, stack, row.data());
+        const std::vector<uint64_t> expected = plain_flood(g, pi);
+        EXPECT_EQ(count, bits::count(row));
+        bits_total += count;
+        if (row != expected && differing++ < 5)
+            ADD_FAILURE() << "portal " << pi << ": " << bits::count(row) << " bits, the plain flood "
+                          << bits::count(expected);
+    }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GT(bits_total, 2 * g.portals.size()) << "the floods should reach past the first leaf";
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. The verdicts
+
+TEST(BaseVisTables, FloatVerdictsNeverContradictTheExactTestOnAGeneratedZone)
+{
+    expect_verdicts_agree(generated_portals(120, 7), "gen 120", 0.95);
+}
+
+TEST(BaseVisTables, FloatVerdictsNeverContradictTheExactTestOnARealMap)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+    const Zone* zone = test::shared_zone("quake/e1m1.bsp");
+    ASSERT_NE(zone, nullptr);
+    PortalOptions options;
+    options.sky = SkyPortals::None;
+    expect_verdicts_agree({build_zone_portals(*zone, options), uint32_t(zone->region_count())}, "e1m1", 0.9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. The rows
+
+TEST(BaseVisTables, RowsAreThoseOfAPlainFloodOnAGeneratedZone)
+{
+    expect_rows_of_plain_flood(generated_portals(150, 11));
+}
+
+TEST(BaseVisTables, RowsAreThoseOfAPlainFloodOnARealMap)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+    const Zone* zone = test::shared_zone("quake/e1m1.bsp");
+    ASSERT_NE(zone, nullptr);
+    PortalOptions options;
+    options.sky = SkyPortals::None;
+    expect_rows_of_plain_flood({build_zone_portals(*zone, options), uint32_t(zone->region_count())});
+}
+
+} // namespace
+} // namespace pvs
