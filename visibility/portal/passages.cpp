@@ -165,16 +165,21 @@ struct RowBuilder {
     }
 };
 
-// The words the rows of every kSampleStride-th portal take, times kSampleStride: an estimate of
-// all the rows' words from a fixed sample (built on this thread, so it does not depend on the
-// threads).
-size_t sampled_row_words(const Graph& g, int level, const std::vector<RunRow>& mightsee, const std::vector<size_t>& first)
+// Whether the rows of every kSampleStride-th portal, times kSampleStride, take more than `limit`
+// words: an estimate of all the rows' words from a fixed sample (built on this thread, so it
+// does not depend on the threads). The sum only grows, so the sample stops as soon as it passes
+// the limit: the answer is the whole sample's.
+bool sample_exceeds(const Graph& g, int level, const std::vector<RunRow>& mightsee, const std::vector<size_t>& first,
+                    size_t limit)
 {
     RowBuilder builder(g, level);
     std::vector<uint64_t> packed;
-    for (uint32_t a = 0; a < uint32_t(g.portals.size()); a += kSampleStride)
+    for (uint32_t a = 0; a < uint32_t(g.portals.size()); a += kSampleStride) {
         builder.append_rows(g, mightsee, a, first[a + 1] - first[a], packed, nullptr);
-    return packed.size() * kSampleStride;
+        if (packed.size() * kSampleStride > limit)
+            return true;
+    }
+    return false;
 }
 
 } // namespace
@@ -207,7 +212,7 @@ bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, Ro
     // extrapolates to more than twice the budget, no passages. At 5000 rooms the build used to
     // run until the budget stopped it: 2.8 s of two threads and 64 MB at the bake's peak, for
     // nothing. Within twice the budget, the rows' real size decides, as before.
-    if (n / kSampleStride >= 16 && sampled_row_words(g, level, mightsee, out.first) > 2 * word_budget) {
+    if (n / kSampleStride >= 16 && sample_exceeds(g, level, mightsee, out.first, 2 * word_budget)) {
         out = {};
         return false;
     }
