@@ -4,7 +4,8 @@
 # BUILD/corpora/<name> (make-corpora.sh), with its dictionary and max_len (target-options.sh); logs in BUILD/fuzz-logs/<name>.log,
 # crash inputs in BUILD/fuzz-artifacts/<name>/. Build the targets first (run-smoke.sh does).
 #   tests/fuzz/run-long.sh SECONDS [TARGET...]
-# PVSCOPE_FUZZ_BUILD_DIR (default build-fuzz), PVSCOPE_FUZZ_PARALLEL (default 2).
+# PVSCOPE_FUZZ_BUILD_DIR (default build-fuzz), PVSCOPE_FUZZ_PARALLEL (default 2),
+# PVSCOPE_FUZZ_RUNS (also stop a target after this many executions: the issue's bar is 10 M or an hour).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$root"
@@ -21,11 +22,12 @@ run_one() {
     mkdir -p "$corpus" "$build/fuzz-logs" "$build/fuzz-artifacts/$name"
     local dict=$build/fuzz-logs/$name.dict
     fuzz_dict_file "$target" "$dict"
-    local dict_arg=()
+    local dict_arg=() runs_arg=()
+    [ -n "${PVSCOPE_FUZZ_RUNS:-}" ] && runs_arg=(-runs="$PVSCOPE_FUZZ_RUNS")
     [ -s "$dict" ] && dict_arg=(-dict="$dict")
     nice -n 10 "$build/tests/fuzz/$target" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
         -max_len="$(fuzz_max_len_for "$target")" \
-        -print_final_stats=1 "${dict_arg[@]}" -artifact_prefix="$build/fuzz-artifacts/$name/" \
+        -print_final_stats=1 "${dict_arg[@]}" "${runs_arg[@]}" -artifact_prefix="$build/fuzz-artifacts/$name/" \
         "$corpus" "$build/corpora/$name" \
         >"$build/fuzz-logs/$name.log" 2>&1 && echo "run-long: $target done" || echo "run-long: $target FINDING"
 }

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -153,6 +154,24 @@ TEST(BaseVisTables, FloatVerdictsNeverContradictTheExactTestOnARealMap)
     PortalOptions options;
     options.sky = SkyPortals::None;
     expect_verdicts_agree({build_zone_portals(*zone, options), uint32_t(zone->region_count())}, "e1m1", 0.9);
+}
+
+// A zone whose coordinates pass 1e30 (PRT files are floats: up to 3.4e38) would overflow float
+// distances: the slack is infinite there, nothing is decided in floats, and the exact test
+// alone gives the rows.
+TEST(BaseVisTables, CoordinatesBeyondFloatDistancesLeaveEverythingToTheExactTest)
+{
+    Portals portals = generated_portals(20, 3);
+    for (glm::vec3& v : portals.set.points)
+        v *= 1e34f; // a few hundred units become a few 1e36
+    const Graph g = portal_vis::build_graph(portals.set, portals.regions);
+    ASSERT_EQ(g.skipped, 0u);
+    const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
+    EXPECT_TRUE(std::isinf(tables.slack));
+    const VerdictCounts c = check_every_pair(g, tables);
+    EXPECT_GT(c.pairs, 0u);
+    EXPECT_EQ(c.decided, 0u);
+    expect_rows_of_plain_flood(portals);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -10,18 +10,26 @@
 namespace pvs::portal_vis {
 namespace {
 
+// A double as a float, clamped to the float range (a conversion out of range is undefined).
+// Clamped values only occur where the slack is infinite (base_vis_tables), so none decides.
+float to_float(double v)
+{
+    constexpr double kMax = std::numeric_limits<float>::max();
+    return float(std::clamp(v, -kMax, kMax));
+}
+
 Float4 float_plane(const DPlane& plane)
 {
-    return {float(plane.normal.x), float(plane.normal.y), float(plane.normal.z), float(plane.dist)};
+    return {to_float(plane.normal.x), to_float(plane.normal.y), to_float(plane.normal.z), to_float(plane.dist)};
 }
 
 // A sphere whose float radius is not below the double one (the float tests read it as a bound).
 Float4 float_sphere(const Vec& centre, double radius)
 {
-    float r = float(radius);
+    float r = to_float(radius);
     if (double(r) < radius)
         r = std::nextafter(r, std::numeric_limits<float>::infinity());
-    return {float(centre.x), float(centre.y), float(centre.z), r};
+    return {to_float(centre.x), to_float(centre.y), to_float(centre.z), r};
 }
 
 float distance(const Float4& plane, float x, float y, float z)
@@ -126,7 +134,7 @@ BaseVisTables base_vis_tables(const Graph& g)
         const DirectedPortal& t = g.portals[g.leaf_portals[k]];
         for (uint32_t j = 0; j < t.point_count; ++j) {
             const Vec& v = g.points[t.first_point + j];
-            tables.points[tables.point_first[k] + j] = {float(v.x), float(v.y), float(v.z)};
+            tables.points[tables.point_first[k] + j] = {to_float(v.x), to_float(v.y), to_float(v.z)};
             max_extent = std::max(max_extent, abs_sum(v));
         }
     }
@@ -137,7 +145,10 @@ BaseVisTables base_vis_tables(const Graph& g)
     // also covers the exact test's own margin (1e-9 of the magnitudes, sphere_beyond) and the
     // double rounding of the exact distances. (At 5000 generated rooms, M = 11 139: slack 0.022,
     // so points on a plane, |d| < ON_EPSILON - slack, are still decided in floats.)
-    tables.slack = 2e-6 * (max_dist + max_extent);
+    // Past 1e30 (far beyond any level's units) a float distance could overflow: the slack is
+    // then infinite and every test goes to the doubles.
+    const double magnitude = max_dist + max_extent;
+    tables.slack = magnitude < 1e30 ? 2e-6 * magnitude : std::numeric_limits<double>::infinity();
     return tables;
 }
 
@@ -170,7 +181,7 @@ Verdict quick_verdict(const BaseVisTables& tables, const SourcePortal& p, const 
     if (d2 - slack > p.sphere.w)
         return Verdict::kCannotSee;
     Side behind = Side::kPass;
-    if (-d2 - p.sphere.w <= beyond) {
+    if (!(-d2 - p.sphere.w > beyond)) { // (written so that a NaN goes on to undecided)
         if (d2 + 2.0f * slack >= p.sphere.w)
             return Verdict::kUndecided;
         const Float4 flipped{-t_plane.x, -t_plane.y, -t_plane.z, -t_plane.w};
@@ -185,7 +196,7 @@ Verdict quick_verdict(const BaseVisTables& tables, const SourcePortal& p, const 
         const float d1 = distance(p.plane, s);
         if (d1 + slack < -s.w)
             return Verdict::kCannotSee;
-        if (d1 - s.w <= beyond) {
+        if (!(d1 - s.w > beyond)) {
             if (d1 - 2.0f * slack <= -s.w)
                 return Verdict::kUndecided;
             const uint32_t first = tables.point_first[k];

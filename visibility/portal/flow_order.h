@@ -57,6 +57,18 @@ public:
         return s == kDone ? visbits_[qi] : RunRow{};
     }
 
+    // Starts loading the row row(qi, r) would return, when it is there already (never waits).
+    void prefetch(uint32_t qi, uint32_t r) const
+    {
+        const RunRow* rows = mightsee_;
+        if (rank_[qi] + kPruneLag < r) {
+            if (state_[qi].load(std::memory_order_relaxed) != kDone)
+                return;
+            rows = visbits_;
+        }
+        __builtin_prefetch(rows[qi].data);
+    }
+
 private:
     const uint32_t* rank_;
     std::atomic<uint8_t>* state_;
