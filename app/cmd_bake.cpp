@@ -610,9 +610,6 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
         return kExitCancelled;
     }
     const auto write_start = std::chrono::steady_clock::now();
-    // The bake's rows are freed, but the heap keeps their pages resident, and the writer (an S3D
-    // is read again) would add its own on top: 5000 rooms peaked in the writer, at 391 MB.
-    malloc_trim(0);
     write_output(o, in, run.pvs, err);
     if (!o.prt_out.empty())
         write_portal_file(o.prt_out, in.zone, run, err);
