@@ -32,14 +32,6 @@ Float4 float_sphere(const Vec& centre, double radius)
     return {to_float(centre.x), to_float(centre.y), to_float(centre.z), r};
 }
 
-float distance(const Float4& plane, float x, float y, float z)
-{
-    return plane.x * x + plane.y * y + plane.z * z - plane.w;
-}
-float distance(const Float4& plane, const Float4& centre)
-{
-    return distance(plane, centre.x, centre.y, centre.z);
-}
 float distance(const Float4& plane, const Float3& point)
 {
     return distance(plane, point.x, point.y, point.z);
@@ -149,6 +141,8 @@ BaseVisTables base_vis_tables(const Graph& g)
     // then infinite and every test goes to the doubles.
     const double magnitude = max_dist + max_extent;
     tables.slack = magnitude < 1e30 ? 2e-6 * magnitude : std::numeric_limits<double>::infinity();
+    tables.slack_f = float(tables.slack);
+    tables.beyond_f = float(kOnEpsilon + tables.slack);
     return tables;
 }
 
@@ -164,13 +158,8 @@ SourcePortal::SourcePortal(const Graph& g, const BaseVisTables& tables, uint32_t
         }
 }
 
-bool SourcePortal::leaf_in_front(const BaseVisTables& tables, const FloodSlot& header) const
-{
-    return distance(plane, header.sphere) - header.sphere.w > float(kOnEpsilon + tables.slack);
-}
-
-Verdict quick_verdict(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
-                      bool leaf_in_front)
+Verdict verdict_near_planes(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
+                            bool leaf_in_front)
 {
     const float slack = float(tables.slack), epsilon = float(kOnEpsilon), beyond = float(kOnEpsilon + tables.slack);
     // 2. p is not entirely in front of t: p's sphere against t's plane, then p's points. The

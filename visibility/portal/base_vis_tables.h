@@ -52,9 +52,21 @@ struct BaseVisTables {
     std::vector<uint32_t> point_first; // per entry of Graph::leaf_portals, and one past the last
     std::vector<Float3> points;        // every entry's points, in entry order
     double slack = 0.0;
+    float slack_f = 0.0f;  // slack, and ON_EPSILON + slack: what the float tests compare with
+    float beyond_f = 0.0f;
 };
 
 BaseVisTables base_vis_tables(const Graph& g);
+
+// n.x - d in floats.
+inline float distance(const Float4& plane, float x, float y, float z)
+{
+    return plane.x * x + plane.y * y + plane.z * z - plane.w;
+}
+inline float distance(const Float4& plane, const Float4& centre)
+{
+    return distance(plane, centre.x, centre.y, centre.z);
+}
 
 // The source portal of one flood, as quick_verdict reads it.
 struct SourcePortal {
@@ -64,14 +76,40 @@ struct SourcePortal {
     SourcePortal(const Graph& g, const BaseVisTables& tables, uint32_t pi);
     // Whether every portal leaving the leaf of `header` is certainly in front of p (test 1
     // passes for each).
-    bool leaf_in_front(const BaseVisTables& tables, const FloodSlot& header) const;
+    bool leaf_in_front(const BaseVisTables& tables, const FloodSlot& header) const
+    {
+        return distance(plane, header.sphere) - header.sphere.w > tables.beyond_f;
+    }
 };
+
+enum class Verdict : uint8_t { kUndecided, kMightSee, kCannotSee };
+
+// quick_verdict where the spheres do not decide: the points and the coplanar rule.
+Verdict verdict_near_planes(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
+                            bool leaf_in_front);
 
 // portal_might_see's answer for the tested portal of slot `t`, entry k of Graph::leaf_portals,
 // when the floats make it certain, else kUndecided. `leaf_in_front`: SourcePortal::leaf_in_front
-// of the leaf the portal leaves.
-enum class Verdict : uint8_t { kUndecided, kMightSee, kCannotSee };
-Verdict quick_verdict(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
-                      bool leaf_in_front);
+// of the leaf the portal leaves. Inline, for the flood's loop: the spheres decide most pairs.
+inline Verdict quick_verdict(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
+                             bool leaf_in_front)
+{
+    // 2. p's sphere against t's plane; 1. t's leaf's sphere, or its own, against p's plane.
+    const float d2 = distance(t.plane, p.sphere);
+    if (d2 - tables.slack_f > p.sphere.w)
+        return Verdict::kCannotSee;
+    const bool p_behind = -d2 - p.sphere.w > tables.beyond_f;
+    if (leaf_in_front) {
+        if (p_behind)
+            return Verdict::kMightSee;
+    } else {
+        const float d1 = distance(p.plane, t.sphere);
+        if (d1 + tables.slack_f < -t.sphere.w)
+            return Verdict::kCannotSee;
+        if (p_behind && d1 - t.sphere.w > tables.beyond_f)
+            return Verdict::kMightSee;
+    }
+    return verdict_near_planes(tables, p, t, k, leaf_in_front);
+}
 
 } // namespace pvs::portal_vis
