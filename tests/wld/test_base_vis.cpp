@@ -36,6 +36,14 @@ Portals generated_portals(int rooms, uint64_t seed)
     return {build_zone_portals(zone), uint32_t(zone.region_count())};
 }
 
+// A Quake map's portals as the accuracy tests build them (no portals at sky leaves).
+Portals map_portals(const Zone& zone)
+{
+    PortalOptions options;
+    options.sky = SkyPortals::None;
+    return {build_zone_portals(zone, options), uint32_t(zone.region_count())};
+}
+
 // Sanitizer builds ask fewer source portals (every `stride`-th); optimised builds ask all.
 #if defined(__SANITIZE_ADDRESS__)
 constexpr uint32_t kStride = 7;
@@ -151,9 +159,7 @@ TEST(BaseVisTables, FloatVerdictsNeverContradictTheExactTestOnARealMap)
     SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
     const Zone* zone = test::shared_zone("quake/e1m1.bsp");
     ASSERT_NE(zone, nullptr);
-    PortalOptions options;
-    options.sky = SkyPortals::None;
-    expect_verdicts_agree({build_zone_portals(*zone, options), uint32_t(zone->region_count())}, "e1m1", 0.9);
+    expect_verdicts_agree(map_portals(*zone), "e1m1", 0.9);
 }
 
 // A zone whose coordinates pass 1e30 (PRT files are floats: up to 3.4e38) would overflow float
@@ -187,9 +193,7 @@ TEST(BaseVisTables, RowsAreThoseOfAPlainFloodOnARealMap)
     SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
     const Zone* zone = test::shared_zone("quake/e1m1.bsp");
     ASSERT_NE(zone, nullptr);
-    PortalOptions options;
-    options.sky = SkyPortals::None;
-    expect_rows_of_plain_flood({build_zone_portals(*zone, options), uint32_t(zone->region_count())});
+    expect_rows_of_plain_flood(map_portals(*zone));
 }
 
 } // namespace
