@@ -161,7 +161,7 @@ SourcePortal::SourcePortal(const Graph& g, const BaseVisTables& tables, uint32_t
 Verdict verdict_near_planes(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
                             bool leaf_in_front)
 {
-    const float slack = float(tables.slack), epsilon = float(kOnEpsilon), beyond = float(kOnEpsilon + tables.slack);
+    const float slack = tables.slack_f, epsilon = float(kOnEpsilon), beyond = tables.beyond_f;
     // 2. p is not entirely in front of t: p's sphere against t's plane, then p's points. The
     // exact test fails at once when the sphere is beyond t's radius in front, so the points
     // answer only when it certainly is not (a radius is within one float ulp of the double).
