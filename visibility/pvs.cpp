@@ -30,7 +30,7 @@ Pvs Pvs::build_rows(uint32_t row_count, uint32_t region_count, const RowSource& 
     // Compress every row first: the compressed size decides the storage, and identical rows
     // (Quake clusters, EverQuest zones with shared lists) are stored once. They are found by a
     // hash of the encoded bytes and confirmed against the stored copy: keying a map by a copy of
-    // every row doubled the rows at the end of a bake (34 MB of a 5000-room bake's 391 MB peak).
+    // every row doubled the rows at the end of a bake (34 MB of a 5000-room bake's 400 MB peak).
     std::vector<uint64_t> row(pvs.words_per_row_);
     std::vector<uint8_t> encoded;
     struct Stored {
