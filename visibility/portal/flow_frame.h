@@ -10,6 +10,7 @@
 // filled by the flow (flow.h); the frame only holds them.
 #pragma once
 
+#include "visibility/bit_row.h"
 #include "visibility/portal/portal_graph.h"
 
 #include <cassert>
@@ -63,6 +64,12 @@ struct Frame {
     {
         for (SeparatorCache& cache : separators)
             cache.b_side.resize(max_points);
+    }
+    // Whether region `r` is in the mightsee this frame passes on (read within [lo, hi) only).
+    bool may_see(uint32_t r) const
+    {
+        const uint32_t word = r >> 6;
+        return word >= lo && word < hi && bits::test(mightsee, r);
     }
 };
 

@@ -195,8 +195,7 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     rep.wait_seconds = double(totals.wait_nanos.load()) * 1e-9;
 }
 
-// Aggregation (§3.5): a region sees what its outgoing portals see, plus itself; every region
-// when base vis did not finish.
+// Whether every directed portal has its visbits (a cancelled flow leaves some with mightsee only).
 bool every_flow_done(const Bake& b)
 {
     for (uint32_t i = 0; i < b.n; ++i)
@@ -214,6 +213,8 @@ void free_mightsee(Bake& b)
     std::vector<RowPool>().swap(b.might_pools);
 }
 
+// Aggregation (§3.5): a region sees what its outgoing portals see, plus itself; every region
+// when base vis did not finish.
 Pvs aggregate(Bake& b, bool base_done, bool flow_started, VisReport& rep)
 {
     const Graph& g = b.g;
