@@ -495,9 +495,11 @@ bool bake_with_method(const BakeOptions& o, const Input& in, Pvs& pvs, MethodRun
     MethodSettings settings = method_settings(o);
     ProgressBar bar(err, "bake");
     settings.on_reference_round = [&](const ReferenceRound& round, const Pvs&) {
-        char line[200];
-        std::snprintf(line, sizeof line, "reference: %8s lines per region, %9s bits, +%s new (%.3f%%), %.1f s",
-                      std::to_string(round.samples_per_region).c_str(), std::to_string(round.bits).c_str(),
+        char line[240];
+        std::snprintf(line, sizeof line,
+                      "reference: %8s lines and %6s eyes per region, %9s bits, +%s new (%.3f%%), %.1f s",
+                      std::to_string(round.samples_per_region).c_str(),
+                      std::to_string(round.eyes_per_region).c_str(), std::to_string(round.bits).c_str(),
                       std::to_string(round.new_bits).c_str(), 100.0 * round.new_share(), round.seconds);
         bar.note(line);
     };
@@ -689,9 +691,10 @@ void register_bake_command(CLI::App& app, int& exit_code)
                                                          "check that a leaf not yet seen is still reachable "
                                                          "(true: about a third faster on Quake maps)")
         ->capture_default_str();
-    cmd->add_option("--samples", o->samples, "reference: sight lines per region at most (0: double until a "
-                                             "doubling adds under 0.1% of the bits, up to 8192: about 30 s on "
-                                             "e1m1 with 2 cores)")
+    cmd->add_option("--samples", o->samples, "reference: volume lines per region at most, with an eye walked "
+                                             "through the portals per 8 lines (0: double until a doubling adds "
+                                             "under 0.1% of the bits, up to 8192: e1m1 converges at 2048, about "
+                                             "20 s with 2 cores)")
         ->capture_default_str();
     cmd->add_option("--seed", o->seed, "reference, raster: the sampling seed (the same seed gives the same PVS)")
         ->capture_default_str();

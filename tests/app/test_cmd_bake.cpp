@@ -307,7 +307,7 @@ TEST_F(BakeCommand, ReferenceIsALowerBoundOfPortalFullAndWarns)
     reference.samples = 128;
     ASSERT_EQ(run(reference), 0) << err_;
     EXPECT_NE(err_.find("lower bound"), std::string::npos) << err_;
-    EXPECT_NE(err_.find("lines per region"), std::string::npos) << "the rounds are reported: " << err_;
+    EXPECT_NE(err_.find(" eyes per region"), std::string::npos) << "the rounds are reported: " << err_;
     const Rows full_rows = rows_of(*load_s3d(full.output).baked_pvs);
     const Rows reference_rows = rows_of(*load_s3d(reference.output).baked_pvs);
     ASSERT_EQ(full_rows.size(), reference_rows.size());

@@ -3,8 +3,8 @@
 #include "visibility/parallel_items.h"
 
 #include "visibility/portal/portalize.h"
-#include "visibility/reference/frontier.h"
 #include "visibility/reference/line_witness.h"
+#include "visibility/reference/point_walk.h"
 #include "visibility/reference/portal_sampler.h"
 #include "visibility/reference/region_sampler.h"
 #include "visibility/reference/sample_sequence.h"
@@ -31,20 +31,27 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 
 // Salts that keep the two samplers' streams apart.
 constexpr uint64_t kVolumeStream = 0x564f4c554d45ull;   // "VOLUME"
-constexpr uint64_t kFrontierStream = 0x46524f4e54ull;   // "FRONT"
+constexpr uint64_t kWalkStream = 0x57414c4bull;         // "WALK"
+
+// Of every kInteriorEvery eyes on a portal, one is uniform on the portal and the others are on its
+// boundary, kEyeInset inside it (see reference_vis.h, "Walks").
+constexpr uint64_t kInteriorEvery = 4;
+constexpr double kEyeInset = 6.0 * kBeamMargin;
 
 // What every worker reads, and the counters they share.
 struct Shared {
     const TreeTracer& tracer;
     const RegionSampler& volumes;
     const PortalSampler& portals;
+    const PortalWalker& walker;
     WitnessRows& rows;
     std::span<const uint64_t> before; // the rows when the round began: what counts as new
     uint64_t seed;
     double reach; // every line leaves the world box within this distance of a point inside it
     std::atomic<uint64_t> lines{0};
     std::atomic<uint64_t> rejected{0};
-    std::atomic<uint64_t> frontier_found{0};
+    std::atomic<uint64_t> walks{0};
+    std::atomic<uint64_t> truncated_walks{0};
     std::atomic<bool> stop{false};
 };
 
@@ -52,7 +59,7 @@ struct Shared {
 struct Scratch {
     TreeTracer::Scratch trace;
     Stretch stretch;
-    std::vector<uint32_t> ways_in[2];
+    PortalWalker::Scratch walk;
 };
 
 // Sets the pairs of the line's open stretch.
@@ -86,45 +93,52 @@ void sample_volume(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch&
     s.rejected.fetch_add(rejected, std::memory_order_relaxed);
 }
 
-// Lines [first, end) of a frontier pair's stream: through a point on a portal of one side and a
-// point on a frontier portal of the other (a portal of it whose other side the first side sees),
-// the two sides taking turns where both have such portals.
-void sample_frontier(Shared& s, FrontierPair pair, uint64_t first, uint64_t end, Scratch& scratch)
+// Eye i of region r: on the portal i mod (r's portals), the (i / portals)-th eye there. Three in
+// four lie on the portal's boundary, kEyeInset inside it, at the next point of a shifted van der
+// Corput sequence along the perimeter; the fourth is uniform on the portal.
+glm::dvec3 walk_eye(const Shared& s, uint32_t r, uint32_t portal_slot, uint32_t portal, uint64_t i)
 {
-    const uint32_t regions = s.rows.region_count();
-    frontier_portals(s.before, regions, s.portals, pair.a, pair.b, scratch.ways_in[0]); // into b, from a's side
-    frontier_portals(s.before, regions, s.portals, pair.b, pair.a, scratch.ways_in[1]); // into a, from b's side
-    const bool sides[2] = {!scratch.ways_in[0].empty() && !s.portals.links(pair.a).empty(),
-                           !scratch.ways_in[1].empty() && !s.portals.links(pair.b).empty()};
-    if (!sides[0] && !sides[1])
+    const uint64_t on_portal = i / s.portals.links(r).size();
+    const uint64_t key = sampling::sample_key(s.seed, kWalkStream, r, i);
+    if (on_portal % kInteriorEvery == kInteriorEvery - 1)
+        return s.portals.point(portal, sampling::hash_unit(key, 0), sampling::hash_unit(key, 1),
+                               sampling::hash_unit(key, 2));
+    const uint64_t shift = sampling::sample_key(s.seed, kWalkStream, r, ~uint64_t{portal_slot});
+    const uint64_t boundary_index = on_portal - on_portal / kInteriorEvery; // the boundary eyes' own count
+    return s.walker.boundary_point(portal, sampling::stratified_unit(uint32_t(boundary_index), uint32_t(shift)),
+                                   kEyeInset);
+}
+
+// Walks [first, end) of region r's stream (point_walk.h): from each eye, a line through the
+// window of every region the walk reaches that r did not see when the round began. (The rows as
+// the round began, not as they are: what other threads have found must not change which lines
+// are traced.)
+void sample_walks(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch& scratch)
+{
+    const std::span<const PortalSampler::Link> out_of = s.portals.links(r);
+    if (out_of.empty())
         return;
-    bool joined = false;
+    const std::span<const uint64_t> seen = s.before.subspan(size_t(r) * s.rows.words_per_row(), s.rows.words_per_row());
+    uint64_t lines = 0, truncated = 0;
     for (uint64_t i = first; i < end; ++i) {
-        const int side = sides[0] && sides[1] ? int(i & 1) : sides[0] ? 0 : 1;
-        const uint32_t from = side == 0 ? pair.a : pair.b, to = side == 0 ? pair.b : pair.a;
-        const std::vector<uint32_t>& ways_in = scratch.ways_in[side];
-        const std::span<const PortalSampler::Link> out_of = s.portals.links(from);
-        const uint64_t key = sampling::sample_key(s.seed, kFrontierStream, uint64_t(pair.a) << 32 | pair.b, i);
-        const uint32_t exit = out_of[size_t(sampling::hash_unit(key, 0) * double(out_of.size()))].portal;
-        const uint32_t entry = ways_in[size_t(sampling::hash_unit(key, 1) * double(ways_in.size()))];
-        const glm::dvec3 p = s.portals.point(exit, sampling::hash_unit(key, 2), sampling::hash_unit(key, 3),
-                                             sampling::hash_unit(key, 4));
-        const glm::dvec3 q = s.portals.point(entry, sampling::hash_unit(key, 5), sampling::hash_unit(key, 6),
-                                             sampling::hash_unit(key, 7));
-        const glm::dvec3 d = q - p;
-        const double length = glm::length(d);
-        if (!(length > 0.0))
-            continue;
-        // A line in a portal's plane (coplanar portals) runs along the wall the portal is cut
-        // from; the beam test of witness_pairs rejects what it would prove, as any grazing line.
-        const glm::dvec3 dir = d / length;
-        prove(s, p, dir, scratch);
-        const std::vector<uint32_t>& crossed = scratch.stretch.regions;
-        joined = joined || (std::find(crossed.begin(), crossed.end(), to) != crossed.end() &&
-                            std::find(crossed.begin(), crossed.end(), from) != crossed.end());
+        const uint32_t slot = uint32_t(i % out_of.size()), portal = out_of[slot].portal;
+        const glm::dvec3 eye = walk_eye(s, r, slot, portal, i);
+        s.walker.walk(eye, portal, r, scratch.walk);
+        truncated += scratch.walk.truncated ? 1 : 0;
+        for (const PortalWalker::Sight& sight : scratch.walk.sights) {
+            if ((seen[sight.region >> 6] >> (sight.region & 63)) & 1u)
+                continue;
+            const glm::dvec3 d = sight.aim - eye;
+            const double length = glm::length(d);
+            if (!(length > 0.0))
+                continue;
+            prove(s, eye + 0.5 * d, d / length, scratch); // from a point surely off the portal
+            ++lines;
+        }
     }
-    s.lines.fetch_add(end - first, std::memory_order_relaxed);
-    s.frontier_found.fetch_add(joined ? 1 : 0, std::memory_order_relaxed);
+    s.walks.fetch_add(end - first, std::memory_order_relaxed);
+    s.truncated_walks.fetch_add(truncated, std::memory_order_relaxed);
+    s.lines.fetch_add(lines, std::memory_order_relaxed);
 }
 
 // parallel_items (parallel_items.h) with the reference's stop flag and scratch.
@@ -159,7 +173,9 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     const RegionSampler volumes(zone);
     PortalOptions portal_options;
     portal_options.sky = params.sky;
-    const PortalSampler portals(build_zone_portals(zone, portal_options), regions);
+    const PortalSet portal_set = build_zone_portals(zone, portal_options);
+    const PortalSampler portals(portal_set, regions);
+    const PortalWalker walker(portal_set, portals, regions);
     WitnessRows rows(regions);
 
     ReferenceReport report;
@@ -168,16 +184,25 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
         report.regions_without_volume += volumes.has_volume(r) ? 0 : 1;
 
     const Aabb world = zone_portal_world(zone);
-    Shared shared{tracer, volumes, portals, rows, {}, params.seed,
+    Shared shared{tracer, volumes, portals, walker, rows, {}, params.seed,
                   world.empty() ? 0.0 : glm::length(glm::dvec3(world.max) - glm::dvec3(world.min)) * 1.001};
     // Volume line indices feed a 32-bit (0,2)-sequence: at most 2^32 per region.
     const uint64_t max_samples = std::clamp<uint64_t>(params.max_samples, 1, uint64_t{1} << 32);
     const uint64_t initial = std::min<uint64_t>(std::bit_ceil(std::max<uint32_t>(params.initial_samples, 1)), max_samples);
-    const uint64_t initial_frontier = std::max<uint32_t>(1, params.initial_frontier_samples);
-    // Progress: lines so far against the volume lines of every round up to max_samples (the
-    // frontier's share is not known in advance, so the bar may reach its end early or jump).
-    const double planned = 2.0 * double(regions - report.regions_without_volume) * double(max_samples);
-    auto fraction = [&] { return planned > 0 ? std::min(1.0, double(shared.lines.load()) / planned) : 1.0; };
+    // Progress: the work done against the work of every round up to max_samples, a walk counted
+    // as kWalkCost lines (its measured cost on e1m1). The lines aimed by walks are not known in
+    // advance; they are few (under a line per walk), so the bar may end a little early.
+    constexpr double kWalkCost = 300.0;
+    uint32_t regions_with_portals = 0;
+    for (uint32_t r = 0; r < regions; ++r)
+        regions_with_portals += portals.links(r).empty() ? 0 : 1;
+    const double planned = double(regions - report.regions_without_volume) * double(max_samples) +
+                           kWalkCost * double(regions_with_portals) * double(params.initial_walks) *
+                               double(max_samples / initial);
+    auto fraction = [&] {
+        const double done = double(shared.lines.load()) + kWalkCost * double(shared.walks.load());
+        return planned > 0 ? std::min(1.0, done / planned) : 1.0;
+    };
 
     uint64_t bits_before = rows.count();
     bool cancelled = false;
@@ -190,22 +215,18 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
                                     [&](size_t r, Scratch& scratch) {
                                         sample_volume(shared, uint32_t(r), first, end, scratch);
                                     });
-        // Frontier lines: every frontier pair of the rows as the round began, its next indices.
-        if (!cancelled) {
-            const std::vector<FrontierPair> frontier = frontier_pairs(before, regions, portals);
-            const uint64_t f_first = initial_frontier * ((uint64_t{1} << round) - 1);
-            const uint64_t f_end = initial_frontier * ((uint64_t{2} << round) - 1);
-            shared.frontier_found.store(0);
-            cancelled = !parallel_items(shared, frontier.size(), report.threads, params.progress, fraction,
-                                        [&](size_t k, Scratch& scratch) {
-                                            sample_frontier(shared, frontier[k], f_first, f_end, scratch);
+        // Walks: the next eyes of every region's stream, doubling like the volume lines.
+        const uint64_t walks_end = uint64_t(params.initial_walks) << round;
+        if (!cancelled && walks_end > 0)
+            cancelled = !parallel_items(shared, regions, report.threads, params.progress, fraction,
+                                        [&](size_t r, Scratch& scratch) {
+                                            sample_walks(shared, uint32_t(r), round == 0 ? 0 : walks_end / 2, walks_end,
+                                                         scratch);
                                         });
-                summary.frontier_pairs = frontier.size();
-            summary.frontier_found = shared.frontier_found.load();
-        }
         if (cancelled)
             break;
         summary.samples_per_region = end;
+        summary.eyes_per_region = walks_end;
         summary.rays = shared.lines.load();
         summary.bits = rows.count();
         summary.new_bits = summary.bits - bits_before;
@@ -228,6 +249,8 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     report.cancelled = cancelled;
     report.rays = shared.lines.load();
     report.rejected_samples = shared.rejected.load();
+    report.walks = shared.walks.load();
+    report.truncated_walks = shared.truncated_walks.load();
     report.seconds = seconds_since(start);
     report.mean_visible = regions ? double(rows.count()) / double(regions) : 0.0;
     report.peak_bytes_estimate =

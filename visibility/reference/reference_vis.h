@@ -19,34 +19,41 @@
 // sub-epsilon gap prove nothing). Every bit set is witnessed by a segment through open space: the result is a LOWER bound of the true PVS (what a PVS must contain not to pop),
 // where a conservative portal vis is an upper bound. Symmetric by construction.
 //
-// Frontier lines. Volume lines find wide openings quickly and narrow ones (a sight line through two
-// doorways far apart) slowly. So each round also draws lines aimed at the frontier: for every pair
-// (A, B) not yet seen where B lies behind a portal of a region A sees, lines from a point on a
-// portal of A to a point on such a portal of B (portal_sampler.h, frontier.h), both ways round.
-// They are traced like any other line and prove only what they trace.
+// Walks. Volume lines find wide openings quickly and narrow ones (a sight line through two
+// doorways far apart) slowly: both ends must fall in the thin set of lines that pass. So each round
+// also walks from eyes on every region's portals (point_walk.h): from one eye the walk finds, by
+// clipping portals to the cone through the portals before them, every region the eye sees, and
+// for each that the region did not see when the round began a line is traced from the eye through
+// the walk's window into it. The walk only aims: the line proves what it traces, like any other.
+// A sight line from A leaves A through one of its portals, so eyes on A's portals see all A sees.
+// Three in four eyes lie on the portal's boundary, 6 * kBeamMargin inside it, stratified along
+// the perimeter; one in four anywhere on the portal. Lines that see round a corner best start at
+// the door frame (on e1m1, with the eyes uniform on the portals the last doubling to 2048 lines
+// per region still added 0.149 % of the bits; with three in four on the boundary, 0.060 %), and
+// the interior eyes keep the sight lines that pass only a portal's middle within reach.
 //
 // Convergence. Rounds double the lines: round 0 traces params.initial_samples volume lines per
-// region and initial_frontier_samples lines per frontier pair; round k brings the volume total to
-// initial * 2^k (the new lines are the next indices, so the directions of every round's total are
-// stratified again) and gives each frontier pair of that round 2^k times the first count. After
+// region and walks params.initial_walks eyes; round k brings the totals to 2^k times those (the
+// new lines and eyes are the next indices, so every round's total is stratified again). After
 // each round the new bits are counted; the bake stops after a round whose new bits are fewer than
 // converge_share of all bits (it is then "converged"), or when the total would pass max_samples,
 // or on cancel. The report lists every round (lines, bits, new bits, time): how close it came.
-// Measured (docs/performance.md): on e1m1 the yield per doubling falls slowly (0.7-0.9x), so the
-// last bits of a big level cost hours; a bake of a minute leaves about 0.5 % of them unfound.
+// Measured (docs/performance.md): e1m1 converges (under 0.1 % new on a doubling) at 2048 volume
+// lines and 256 eyes per region, in about 21 s on 2 cores.
 //
-// Deterministic for a seed: line i of region A (or of frontier pair (A, B)) depends only on the seed,
-// the pair and i, the frontier pairs of a round only on the rows when it began, and bits are only
-// ever OR-ed in, so neither the thread count nor timing changes the result.
+// Deterministic for a seed: line i and eye i of region A depend only on the seed, A and i, the
+// lines a walk aims only on its eye and the rows when the round began, and bits are only ever
+// OR-ed in, so neither the thread count nor timing changes the result.
 //
 // Threads, progress, cancel: as bake_portal_vis (params.threads workers, 0 = all cores; the
-// calling thread calls progress(fraction) about every 50 ms with the fraction of the rays of
-// max_samples traced, and at 1; false cancels: the rows found so far are returned, still a lower
-// bound, and report.cancelled is set). on_round, when set, is called on the calling thread after
+// calling thread calls progress(fraction) about every 50 ms with the fraction done of the work up
+// to max_samples, walks included, and at 1; false cancels: the rows found so far are returned,
+// still a lower bound, and report.cancelled is set). on_round, when set, is called on the calling thread after
 // each finished round with the rows so far (compare keeps them as the reference at that count).
 //
 // Memory: the rows as a dense bit matrix while sampling (regions^2 / 8 bytes: 182 KB for e1m1,
-// 230 MB for a 43 000-region zone), the sampler's tetrahedra, one small stack per thread.
+// 230 MB for a 43 000-region zone), the sampler's tetrahedra, the portals in double for the
+// walks, and per thread a small stack and the walk's scratch.
 // Zones without a tree are refused: every zone pvscope loads today has one (a mesh tracer for
 // tree-less OBJ zones comes with them).
 #pragma once
@@ -63,20 +70,19 @@ namespace pvs {
 
 struct ReferenceRound {
     uint64_t samples_per_region = 0; // rays per region so far (the round's total)
-    uint64_t rays = 0;               // lines traced so far (volume and frontier, rejected samples included)
+    uint64_t rays = 0;               // lines traced so far (volume and aimed by walks, rejected samples included)
     uint64_t bits = 0;               // set bits of all rows after this round
     uint64_t new_bits = 0;           // of which this round found
     double seconds = 0.0;            // wall clock since the bake started
-    uint64_t frontier_pairs = 0;     // pairs searched by frontier lines this round
-    uint64_t frontier_found = 0;     // of which a line joined
+    uint64_t eyes_per_region = 0;    // eyes walked per region so far (point_walk.h)
     double new_share() const { return bits ? double(new_bits) / double(bits) : 0.0; }
 };
 
 struct ReferenceParams {
     uint64_t seed = 1;
     uint32_t initial_samples = 64;     // volume lines per region in round 0 (rounded up to a power of two)
-    uint32_t initial_frontier_samples = 8; // frontier lines per frontier pair in round 0
-    uint64_t max_samples = 8192;       // volume lines per region at most (e1m1: about 30 s on 2 cores)
+    uint32_t initial_walks = 8;        // eyes walked per region in round 0 (point_walk.h); 0: none
+    uint64_t max_samples = 8192;       // volume lines per region at most (e1m1: converged at 2048)
     double converge_share = 0.001;     // stop after a round adding fewer than this share of the bits; 0: never
     SkyPortals sky = SkyPortals::SkyToSky;
     unsigned threads = 0;              // 0 = std::thread::hardware_concurrency()
@@ -90,6 +96,8 @@ struct ReferenceReport {
     bool cancelled = false;
     uint64_t rays = 0;
     uint64_t rejected_samples = 0;     // samples whose trace did not start in their region
+    uint64_t walks = 0;                // eyes walked
+    uint64_t truncated_walks = 0;      // of which stopped at the walk's depth limit or window budget
     uint32_t regions_without_volume = 0; // regions with nothing to sample (they see only themselves)
     double seconds = 0.0;
     unsigned threads = 0;

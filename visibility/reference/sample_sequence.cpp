@@ -39,6 +39,11 @@ constexpr uint32_t reverse_bits(uint32_t x)
 
 } // namespace
 
+double stratified_unit(uint32_t index, uint32_t shift)
+{
+    return (double(reverse_bits(index) ^ shift) + 0.5) * 0x1.0p-32;
+}
+
 glm::dvec3 stratified_direction(uint32_t index, uint64_t shift)
 {
     const double u = (double(reverse_bits(index) ^ uint32_t(shift)) + 0.5) * 0x1.0p-32;

@@ -8,6 +8,7 @@
 //    by the 64 bits of `shift` (which keeps it a (0,2)-sequence), through the equal-area map
 //    z = 1 - 2u, phi = 2 pi v: the first 2^k directions of a stream put one direction in every
 //    elementary box of area 2^-k of the (u, v) square, so each doubling refines the last.
+//  - stratified_unit(index, shift): the first of those dimensions alone, in [0, 1).
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,10 @@ constexpr uint64_t sample_key(uint64_t seed, uint64_t a, uint64_t b, uint64_t in
 
 // The k-th uniform number in [0, 1) of a key.
 constexpr double hash_unit(uint64_t key, uint64_t k) { return double(mix64(key + (k + 1) * kGolden) >> 11) * 0x1.0p-53; }
+
+// Point `index` (< 2^32) of the van der Corput sequence in base 2 (the bit reversal), digitally
+// shifted by `shift`: the first 2^k points of a stream put one point in every interval of 2^-k.
+double stratified_unit(uint32_t index, uint32_t shift);
 
 // The unit direction of point `index` (< 2^32) of a shifted (0,2)-sequence (see above).
 glm::dvec3 stratified_direction(uint32_t index, uint64_t shift);
