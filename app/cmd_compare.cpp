@@ -154,8 +154,9 @@ void register_compare_command(CLI::App& app, int& exit_code)
     cmd->add_option("--methods", o->methods, "Comma-separated methods (default: all): " + vis_method_names() +
                                                  "; portal-full runs at levels 1-4 and without passages / target "
                                                  "checks. The reference always runs.");
-    cmd->add_option("--samples", o->samples, "Reference: sight lines per region at most (0: until a doubling adds "
-                                             "under 0.1% of the bits, up to 8192); each doubling is a point")
+    cmd->add_option("--samples", o->samples, "Reference: volume lines per region at most, with an eye walked "
+                                             "through the portals per 8 lines (0: until a doubling adds under 0.1% "
+                                             "of the bits, up to 8192); each doubling is a point")
         ->capture_default_str();
     cmd->add_option("--seed", o->seed, "Seed of the reference and the cameras")->capture_default_str();
     cmd->add_option("--cameras", o->cameras, "Seeded cameras for popping and overdraw (0: no walk)")

@@ -132,7 +132,8 @@ std::vector<CompareRow> run_reference(const Zone& zone, const CompareOptions& o,
         MethodRun run;
         run.pvs = rows;
         run.seconds = round.seconds;
-        run.summary = "reference after " + std::to_string(round.samples_per_region) + " lines per region";
+        run.summary = "reference after " + std::to_string(round.samples_per_region) + " lines and " +
+                      std::to_string(round.eyes_per_region) + " eyes per region";
         rounds.push_back(measured_row(method, at, std::move(run), cpu_seconds() - cpu_before, memory));
     };
     MethodRun run = method.run(zone, settings);

@@ -63,6 +63,57 @@ void expect_planes_face_their_regions(const Zone& zone)
     EXPECT_GE(double(agree), 0.98 * double(checked)) << agree << " of " << checked;
 }
 
+// A 10 x 10 portal in the plane x = 0 between regions 0 and 1.
+PortalSet square_portal()
+{
+    PortalSet set;
+    set.points = {{0, 0, 0}, {0, 10, 0}, {0, 10, 10}, {0, 0, 10}};
+    set.portals.push_back({{0, 1}, 0, 4});
+    return set;
+}
+
+TEST(PointWalk, BoundaryEyesLieInsetOnThePortal)
+{
+    const PortalSet set = square_portal();
+    const PortalSampler links(set, 2);
+    const PortalWalker walker(set, links, 2);
+    for (int k = 0; k < 64; ++k) {
+        const double u = (k + 0.5) / 64.0;
+        const glm::dvec3 p = walker.boundary_point(0, u, 0.3);
+        EXPECT_NEAR(p.x, 0.0, 1e-12) << "in the portal's plane";
+        const double to_edge = std::min({p.y, 10.0 - p.y, p.z, 10.0 - p.z});
+        // Moved 0.3 toward the centre: at least 0.3 / sqrt(2) from every edge (a corner moves
+        // along the diagonal), at most 0.3 from the edge it started on.
+        EXPECT_GE(to_edge, 0.3 / std::sqrt(2.0) - 1e-12) << "u " << u;
+        EXPECT_LE(to_edge, 0.3 + 1e-12) << "u " << u;
+    }
+    // The perimeter is walked in order: u = 1/8 is halfway along the first edge.
+    const glm::dvec3 first = walker.boundary_point(0, 0.125, 0.0);
+    EXPECT_NEAR(first.y, 5.0, 1e-12);
+    EXPECT_NEAR(first.z, 0.0, 1e-12);
+    // A portal thinner than twice the inset: the eye stops halfway to the centre.
+    const glm::dvec3 tiny = walker.boundary_point(0, 0.125, 100.0);
+    EXPECT_NEAR(tiny.y, 5.0, 1e-12);
+    EXPECT_NEAR(tiny.z, 2.5, 1e-12);
+}
+
+TEST(PointWalk, StratifiedUnitsFillEveryIntervalOfEachDoubling)
+{
+    for (uint32_t shift : {0u, 0x9e3779b9u}) {
+        for (uint32_t k = 0; k <= 10; ++k) {
+            const uint32_t n = 1u << k;
+            std::vector<int> hits(n);
+            for (uint32_t i = 0; i < n; ++i) {
+                const double u = sampling::stratified_unit(i, shift);
+                ASSERT_GE(u, 0.0);
+                ASSERT_LT(u, 1.0);
+                ++hits[size_t(u * n)];
+            }
+            EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), int(n)) << "2^" << k << " points, shift " << shift;
+        }
+    }
+}
+
 TEST(PointWalk, PortalPlanesFaceTheirFrontRegionOnAGeneratedZone)
 {
     expect_planes_face_their_regions(gen::generate_zone({40, 3}));

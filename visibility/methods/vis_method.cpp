@@ -195,9 +195,10 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
     run.peak_bytes_estimate = report.peak_bytes_estimate;
     run.cancelled = report.cancelled;
     const ReferenceRound last = report.rounds.empty() ? ReferenceRound{} : report.rounds.back();
-    run.summary = format("reference: %s lines, %s per region, mean %.1f visible of %u regions, last doubling "
-                         "added %.3f%%%s, %.2f s on %u threads",
+    run.summary = format("reference: %s lines, %s per region, %s walks from %s eyes per region, mean %.1f visible "
+                         "of %u regions, last doubling added %.3f%%%s, %.2f s on %u threads",
                          std::to_string(report.rays).c_str(), std::to_string(last.samples_per_region).c_str(),
+                         std::to_string(report.walks).c_str(), std::to_string(last.eyes_per_region).c_str(),
                          report.mean_visible, pvs.region_count(), 100.0 * last.new_share(),
                          report.converged ? " (converged)" : "", report.seconds, report.threads);
     run.pvs = std::move(pvs);
