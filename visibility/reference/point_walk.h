@@ -11,14 +11,16 @@
 //
 // The walk. An eye on portal P0 (from region `from` into region `into`) starts in `into` with the
 // whole half-space beyond P0 in view. In a region R entered through window W (a convex polygon on
-// the portal it came through), each other portal Q of R with the eye strictly on R's side of its
-// plane is clipped to the cone from the eye over W (one plane through the eye per edge of W);
-// what is left, W', is the window into the region S behind Q, and the walk goes on into S with
-// W'. Every point of W' is reached from the eye by a segment through P0, every window before it
-// and R: the regions are convex (the leaves of the tree), so each piece of the segment between
-// two windows lies in the region between them. Different chains to the same portal see through
-// disjoint cones (a line crosses one sequence of convex regions), so the walk is finite without
-// marking anything; a depth limit and a window budget bound it on hostile or degenerate input.
+// the portal it came through), each other portal Q of R with the eye at least 0.01 units on R's
+// side of its plane (nearer, float noise between coplanar portals' planes could put the eye on
+// both sides of a wall cut into pieces) is clipped to the cone from the eye over W (one plane
+// through the eye per edge of W); what is left, W', is the window into the region S behind Q,
+// and the walk goes on into S with W'. Every point of W' is reached from the eye by a segment
+// through P0, every window before it and R: the regions are convex (the leaves of the tree), so
+// each piece of the segment between two windows lies in the region between them. In exact
+// arithmetic different chains to the same portal see through disjoint cones (a line crosses one
+// sequence of convex regions) and no chain returns to a region, so the walk ends without marking
+// anything; a depth limit and a window budget bound it where rounding or hostile input would not.
 // Windows of almost no area (under kMinWindowArea) are dropped: a sight line through them would
 // not pass the reference's beam test.
 //
@@ -48,7 +50,7 @@ class PortalWalker {
 public:
     // Windows with less area than this (zone units squared) are dropped (see above).
     static constexpr double kMinWindowArea = 1e-6;
-    static constexpr uint32_t kMaxDepth = 1024;
+    static constexpr uint32_t kMaxDepth = 1024; // walk() recurses: about 150 bytes of stack a level
     static constexpr uint32_t kMaxWindowsPerWalk = 1u << 18;
     static constexpr uint32_t kMaxWindowPoints = 64;
 
