@@ -201,6 +201,8 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
                          std::to_string(report.walks).c_str(), std::to_string(last.eyes_per_region).c_str(),
                          report.mean_visible, pvs.region_count(), 100.0 * last.new_share(),
                          report.converged ? " (converged)" : "", report.seconds, report.threads);
+    if (report.truncated_walks) // a walk that hit its depth limit or budget: degenerate portals
+        run.summary += format("; %s walks cut short", std::to_string(report.truncated_walks).c_str());
     run.pvs = std::move(pvs);
     return run;
 }

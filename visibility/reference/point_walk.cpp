@@ -17,6 +17,8 @@ namespace {
 constexpr double kEyeEpsilon = 0.01;
 // How far outside a cone plane a clipped point may be and still count as inside it.
 constexpr double kClipEpsilon = 1e-9;
+// Scratch::sight_of of a stamped region that has no sight (the two sides of the eye's portal).
+constexpr uint32_t kNoSight = ~uint32_t{0};
 
 // Twice the area vector of a polygon (Newell's method).
 glm::dvec3 area_vector(std::span<const glm::dvec3> points)
@@ -130,8 +132,9 @@ void PortalWalker::walk(const glm::dvec3& eye, uint32_t portal, uint32_t from, S
     const int32_t into = front_region_[portal] == int32_t(from) ? back_region_[portal] : front_region_[portal];
     if (into < 0 || uint32_t(into) >= regions_ || from >= regions_)
         return;
-    scratch.stamp[from] = scratch.walk;
-    scratch.stamp[size_t(into)] = scratch.walk;
+    // Neither side of the eye's own portal is listed (nor reached again: the regions are convex).
+    scratch.stamp[from] = scratch.stamp[size_t(into)] = scratch.walk;
+    scratch.sight_of[from] = scratch.sight_of[size_t(into)] = kNoSight;
     enter(eye, uint32_t(into), portal, 0, 0, 0, scratch);
 }
 
@@ -187,9 +190,7 @@ void PortalWalker::enter(const glm::dvec3& eye, uint32_t region, uint32_t came_t
             scratch.sight_of[behind] = uint32_t(scratch.sights.size());
             scratch.sights.push_back({behind, mean(*cur)});
             scratch.sight_area.push_back(area);
-        } else if (scratch.sight_of[behind] < scratch.sights.size() &&
-                   scratch.sights[scratch.sight_of[behind]].region == behind &&
-                   area > scratch.sight_area[scratch.sight_of[behind]]) {
+        } else if (scratch.sight_of[behind] != kNoSight && area > scratch.sight_area[scratch.sight_of[behind]]) {
             scratch.sights[scratch.sight_of[behind]].aim = mean(*cur);
             scratch.sight_area[scratch.sight_of[behind]] = area;
         }

@@ -63,7 +63,7 @@ public:
         std::vector<glm::dvec3> cones; // their cones' plane normals (planes through the eye)
         std::vector<glm::dvec3> clip[2]; // a clip's ping-pong buffers
         std::vector<uint32_t> stamp;   // per region: the walk that last reached it
-        std::vector<uint32_t> sight_of; // per region: its index in sights, when stamped
+        std::vector<uint32_t> sight_of; // per region, when stamped: its index in sights (or none)
         std::vector<double> sight_area; // per sight: the area of its window
         uint32_t walk = 0;
         uint32_t windows = 0;

@@ -93,17 +93,18 @@ void sample_volume(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch&
     s.rejected.fetch_add(rejected, std::memory_order_relaxed);
 }
 
-// Eye i of region r: on the portal i mod (r's portals), the (i / portals)-th eye there. Three in
-// four lie on the portal's boundary, kEyeInset inside it, at the next point of a shifted van der
-// Corput sequence along the perimeter; the fourth is uniform on the portal.
-glm::dvec3 walk_eye(const Shared& s, uint32_t r, uint32_t portal_slot, uint32_t portal, uint64_t i)
+// Eye i of region r (whose portals are `out_of`): on portal i mod |out_of|, the (i / |out_of|)-th
+// eye there. Three in four lie on the portal's boundary, kEyeInset inside it, at the next point
+// of a shifted van der Corput sequence along the perimeter; the fourth is uniform on the portal.
+glm::dvec3 walk_eye(const Shared& s, uint32_t r, std::span<const PortalSampler::Link> out_of, uint64_t i)
 {
-    const uint64_t on_portal = i / s.portals.links(r).size();
+    const uint64_t slot = i % out_of.size(), on_portal = i / out_of.size();
+    const uint32_t portal = out_of[slot].portal;
     const uint64_t key = sampling::sample_key(s.seed, kWalkStream, r, i);
     if (on_portal % kInteriorEvery == kInteriorEvery - 1)
         return s.portals.point(portal, sampling::hash_unit(key, 0), sampling::hash_unit(key, 1),
                                sampling::hash_unit(key, 2));
-    const uint64_t shift = sampling::sample_key(s.seed, kWalkStream, r, ~uint64_t{portal_slot});
+    const uint64_t shift = sampling::sample_key(s.seed, kWalkStream, r, ~slot);
     const uint64_t boundary_index = on_portal - on_portal / kInteriorEvery; // the boundary eyes' own count
     return s.walker.boundary_point(portal, sampling::stratified_unit(uint32_t(boundary_index), uint32_t(shift)),
                                    kEyeInset);
@@ -121,9 +122,8 @@ void sample_walks(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch& 
     const std::span<const uint64_t> seen = s.before.subspan(size_t(r) * s.rows.words_per_row(), s.rows.words_per_row());
     uint64_t lines = 0, truncated = 0;
     for (uint64_t i = first; i < end; ++i) {
-        const uint32_t slot = uint32_t(i % out_of.size()), portal = out_of[slot].portal;
-        const glm::dvec3 eye = walk_eye(s, r, slot, portal, i);
-        s.walker.walk(eye, portal, r, scratch.walk);
+        const glm::dvec3 eye = walk_eye(s, r, out_of, i);
+        s.walker.walk(eye, out_of[i % out_of.size()].portal, r, scratch.walk);
         truncated += scratch.walk.truncated ? 1 : 0;
         for (const PortalWalker::Sight& sight : scratch.walk.sights) {
             if ((seen[sight.region >> 6] >> (sight.region & 63)) & 1u)
