@@ -3,9 +3,12 @@
 //     test portal_might_see, on every pair of a generated zone (coplanar and edge-sharing
 //     portals by the thousand) and of a real map, and it decides nearly all of them (else the
 //     tables would be slower than the doubles they stand in for);
-//  2. base_portal_vis gives the rows of a plain flood through portal_might_see, written here
-//     on the graph alone (no tables, no float), on the same zones.
+//  2. base vis in batches of 64 sources (base_vis_batch.h), in any order and with a short last
+//     batch, gives the rows of a plain flood through portal_might_see,
+//     written here on the graph alone (no tables, no float, one source at a time), on the same
+//     zones.
 #include "visibility/portal/base_vis.h"
+#include "visibility/portal/base_vis_batch.h"
 
 #include "tests/support/test_data.h"
 #include "visibility/bit_row.h"
@@ -14,7 +17,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -126,24 +131,51 @@ std::vector<uint64_t> plain_flood(const Graph& g, uint32_t pi)
     return row;
 }
 
-void expect_rows_of_plain_flood(const Portals& portals)
+// The batches of `order`, kBatchLanes at a time (the last one short unless the count divides),
+// against the plain flood of each source.
+void expect_batch_rows_of_plain_flood(const Graph& g, const portal_vis::BaseVisTables& tables,
+                                      const std::vector<uint32_t>& order, const char* name)
+{
+    ASSERT_EQ(order.size(), g.portals.size());
+    portal_vis::BaseVisBatch batch(g);
+    size_t differing = 0, asked = 0;
+    for (size_t first = 0; first < order.size(); first += portal_vis::kBatchLanes) {
+        const size_t lanes = std::min<size_t>(portal_vis::kBatchLanes, order.size() - first);
+        const std::span<const uint32_t> sources(&order[first], lanes);
+        batch.run(g, tables, sources);
+        if ((first / portal_vis::kBatchLanes) % kStride != 0)
+            continue;
+        for (uint32_t lane = 0; lane < lanes; ++lane) {
+            const std::vector<uint64_t> expected = plain_flood(g, sources[lane]);
+            const std::span<const uint64_t> row = batch.row(lane);
+            ++asked;
+            EXPECT_EQ(batch.count(lane), bits::count(expected));
+            if (!std::equal(row.begin(), row.end(), expected.begin(), expected.end()) && differing++ < 5)
+                ADD_FAILURE() << name << ": portal " << sources[lane] << " (lane " << lane << "): "
+                              << bits::count(row) << " bits, the plain flood " << bits::count(expected);
+        }
+    }
+    EXPECT_EQ(differing, 0u) << name;
+    EXPECT_GT(asked, 0u);
+}
+
+// In the order base vis uses, and in index order backwards (other company in every batch, and a
+// short last batch at the other end).
+void expect_batches_of_plain_flood(const Portals& portals)
 {
     const Graph g = portal_vis::build_graph(portals.set, portals.regions);
     const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
-    std::vector<uint32_t> stack;
-    std::vector<uint64_t> row(g.words);
-    size_t differing = 0, bits_total = 0;
-    for (uint32_t pi = 0; pi < g.portals.size(); ++pi) {
-        const uint32_t count = portal_vis::base_portal_vis(g, tables, pi, stack, row.data());
-        const std::vector<uint64_t> expected = plain_flood(g, pi);
-        EXPECT_EQ(count, bits::count(row));
-        bits_total += count;
-        if (row != expected && differing++ < 5)
-            ADD_FAILURE() << "portal " << pi << ": " << bits::count(row) << " bits, the plain flood "
-                          << bits::count(expected);
-    }
-    EXPECT_EQ(differing, 0u);
-    EXPECT_GT(bits_total, 2 * g.portals.size()) << "the floods should reach past the first leaf";
+    const std::vector<uint32_t> order = portal_vis::base_vis_batch_order(g);
+    std::vector<uint32_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (uint32_t i = 0; i < sorted.size(); ++i)
+        ASSERT_EQ(sorted[i], i) << "every directed portal once";
+    expect_batch_rows_of_plain_flood(g, tables, order, "batch order");
+    std::vector<uint32_t> backwards(g.portals.size());
+    for (uint32_t i = 0; i < backwards.size(); ++i)
+        backwards[i] = uint32_t(backwards.size()) - 1 - i;
+    ASSERT_NE(backwards.size() % portal_vis::kBatchLanes, 0u) << "pick a zone whose last batch is short";
+    expect_batch_rows_of_plain_flood(g, tables, backwards, "index order, backwards");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -177,23 +209,43 @@ TEST(BaseVisTables, CoordinatesBeyondFloatDistancesLeaveEverythingToTheExactTest
     const VerdictCounts c = check_every_pair(g, tables);
     EXPECT_GT(c.pairs, 0u);
     EXPECT_EQ(c.decided, 0u);
-    expect_rows_of_plain_flood(portals);
+    expect_batches_of_plain_flood(portals);
 }
 
 // ---------------------------------------------------------------------------------------------
 // 2. The rows
 
-TEST(BaseVisTables, RowsAreThoseOfAPlainFloodOnAGeneratedZone)
+TEST(BaseVisBatch, RowsAreThoseOfAPlainFloodOnAGeneratedZone)
 {
-    expect_rows_of_plain_flood(generated_portals(150, 11));
+    expect_batches_of_plain_flood(generated_portals(150, 11));
 }
 
-TEST(BaseVisTables, RowsAreThoseOfAPlainFloodOnARealMap)
+// Fewer leaves than lanes, and a first batch with a source into every leaf: every leaf is
+// queued at once when the batch starts (the queue must not take itself for empty).
+TEST(BaseVisBatch, RowsAreThoseOfAPlainFloodWhenTheSourcesStartInEveryLeaf)
+{
+    const Portals portals = generated_portals(5, 5);
+    const Graph g = portal_vis::build_graph(portals.set, portals.regions);
+    const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
+    ASSERT_LE(g.leaf_count, portal_vis::kBatchLanes);
+    std::vector<uint32_t> first, rest;
+    std::vector<bool> led_into(g.leaf_count, false);
+    for (uint32_t i = 0; i < g.portals.size(); ++i) {
+        const uint32_t leaf = g.portals[i].leaf;
+        (led_into[leaf] ? rest : first).push_back(i);
+        led_into[leaf] = true;
+    }
+    ASSERT_EQ(first.size(), size_t{g.leaf_count}) << "a portal into every leaf";
+    first.insert(first.end(), rest.begin(), rest.end());
+    expect_batch_rows_of_plain_flood(g, tables, first, "a source into every leaf first");
+}
+
+TEST(BaseVisBatch, RowsAreThoseOfAPlainFloodOnARealMap)
 {
     SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
     const Zone* zone = test::shared_zone("quake/e1m1.bsp");
     ASSERT_NE(zone, nullptr);
-    expect_rows_of_plain_flood(map_portals(*zone));
+    expect_batches_of_plain_flood(map_portals(*zone));
 }
 
 } // namespace

@@ -15,7 +15,7 @@
 #include "tests/support/test_data.h"
 #include "tests/support/visdemo_rows.h"
 #include "visibility/bit_row.h"
-#include "visibility/portal/base_vis.h"
+#include "visibility/portal/base_vis_batch.h"
 #include "visibility/portal/passages.h"
 #include "visibility/portal/portalize.h"
 #include "wld/quake/prt_file.h"
@@ -33,6 +33,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -453,12 +454,17 @@ TEST(PortalVis, EveryNonEmptyPassageRowHoldsItsSecondPortalsLeaf)
     std::vector<portal_vis::RunRow> mightsee(g.portals.size());
     portal_vis::RowPool pool, narrowed;
     const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
-    std::vector<uint32_t> stack;
-    std::vector<uint64_t> dense(g.words), encoded;
-    for (uint32_t i = 0; i < g.portals.size(); ++i) {
-        portal_vis::base_portal_vis(g, tables, i, stack, dense.data());
-        portal_vis::encode_runs(dense, encoded);
-        mightsee[i] = pool.append(encoded);
+    portal_vis::BaseVisBatch batch(g);
+    std::vector<uint64_t> encoded;
+    const std::vector<uint32_t> order = portal_vis::base_vis_batch_order(g);
+    for (size_t first = 0; first < order.size(); first += portal_vis::kBatchLanes) {
+        const std::span<const uint32_t> sources(&order[first],
+                                                std::min<size_t>(portal_vis::kBatchLanes, order.size() - first));
+        batch.run(g, tables, sources);
+        for (uint32_t lane = 0; lane < sources.size(); ++lane) {
+            portal_vis::encode_runs(batch.row(lane), encoded);
+            mightsee[sources[lane]] = pool.append(encoded);
+        }
     }
     portal_vis::Passages passages;
     std::atomic<bool> cancel{false}, user_cancel{false};

@@ -1,11 +1,7 @@
-// Base portal vis (base_vis.h).
+// Base vis's exact test (base_vis.h).
 #include "visibility/portal/base_vis.h"
 
-#include "visibility/bit_row.h"
-
-#include <algorithm>
 #include <cmath>
-#include <span>
 
 namespace pvs::portal_vis {
 namespace {
@@ -72,45 +68,6 @@ bool portal_might_see(const Graph& g, const DirectedPortal& p, const DirectedPor
     if ((t_coplanar || p_coplanar) && glm::dot(p.plane.normal, t.plane.normal) < kCoplanarFacing)
         return false;
     return true;
-}
-
-uint32_t base_portal_vis(const Graph& g, const BaseVisTables& tables, uint32_t pi,
-                         std::vector<uint32_t>& stack, uint64_t* mightsee)
-{
-    const std::span<uint64_t> row(mightsee, g.words);
-    std::fill(row.begin(), row.end(), 0);
-    const DirectedPortal& p = g.portals[pi];
-    const SourcePortal source(g, tables, pi);
-    uint32_t count = 1;
-    bits::set(row, p.leaf); // p itself leads there: the mark skips it
-    stack.clear();
-    stack.push_back(tables.leaf_slot[p.leaf]);
-    while (!stack.empty()) {
-        const FloodSlot* header = &tables.slots[stack.back()];
-        stack.pop_back();
-        const uint32_t first_entry = header->slot;
-        int leaf_in_front = -1; // asked once per leaf, when a portal needs it
-        for (uint32_t j = 0; j < header->leaf; ++j) {
-            const FloodSlot& t = header[1 + j];
-            if (bits::test(row, t.leaf))
-                continue;
-            if (leaf_in_front < 0)
-                leaf_in_front = source.leaf_in_front(tables, *header);
-            const size_t k = first_entry + j;
-            const Verdict verdict = quick_verdict(tables, source, t, k, leaf_in_front != 0);
-            if (verdict == Verdict::kCannotSee ||
-                (verdict == Verdict::kUndecided && !portal_might_see(g, p, g.portals[g.leaf_portals[k]])))
-                continue;
-            bits::set(row, t.leaf);
-            ++count;
-            stack.push_back(t.slot);
-            // Its run is read soon (the stack is last in, first out): start loading it now.
-            const char* run = reinterpret_cast<const char*>(&tables.slots[t.slot]);
-            __builtin_prefetch(run);
-            __builtin_prefetch(run + 64);
-        }
-    }
-    return count;
 }
 
 } // namespace pvs::portal_vis

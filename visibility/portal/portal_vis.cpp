@@ -12,6 +12,7 @@
 
 #include "visibility/bit_row.h"
 #include "visibility/portal/base_vis.h"
+#include "visibility/portal/base_vis_batch.h"
 #include "visibility/portal/flow.h"
 #include "visibility/portal/flow_order.h"
 #include "visibility/portal/passages.h"
@@ -70,25 +71,33 @@ struct Bake {
     }
 };
 
-// Base vis: every directed portal on its own. False when cancelled.
+// Base vis: the directed portals in batches of kBatchLanes (base_vis_batch.h), in
+// base_vis_batch_order. False when cancelled.
 bool run_base_vis(Bake& b, bool full)
 {
     std::atomic<uint32_t> next{0}, done{0};
     const BaseVisTables tables = base_vis_tables(b.g); // freed when base vis ends
+    const std::vector<uint32_t> order = base_vis_batch_order(b.g);
+    const uint32_t batches = (b.n + kBatchLanes - 1) / kBatchLanes;
     run_parallel(
         b.threads,
         [&](unsigned t) {
-            std::vector<uint32_t> stack;
-            stack.reserve(b.g.leaf_count);
-            std::vector<uint64_t> dense(b.g.words), encoded;
+            BaseVisBatch batch(b.g);
+            std::vector<uint64_t> encoded;
             while (!b.cancel.load(std::memory_order_relaxed)) {
                 const uint32_t i = next.fetch_add(1);
-                if (i >= b.n)
+                if (i >= batches)
                     break;
-                b.nummightsee[i] = base_portal_vis(b.g, tables, i, stack, dense.data());
-                encode_runs(dense, encoded);
-                b.mightsee[i] = b.might_pools[t].append(encoded);
-                done.fetch_add(1, std::memory_order_relaxed);
+                const uint32_t first = i * kBatchLanes, lanes = std::min(kBatchLanes, b.n - first);
+                const std::span<const uint32_t> sources(&order[first], lanes);
+                batch.run(b.g, tables, sources);
+                for (uint32_t lane = 0; lane < lanes; ++lane) {
+                    encoded.clear();
+                    encode_runs(batch.row(lane), encoded);
+                    b.mightsee[sources[lane]] = b.might_pools[t].append(encoded);
+                    b.nummightsee[sources[lane]] = batch.count(lane);
+                }
+                done.fetch_add(lanes, std::memory_order_relaxed);
             }
         },
         b.cancel, b.user_cancel, b.params.progress,
