@@ -77,6 +77,7 @@ void BaseVisBatch::run(const Graph& g, const BaseVisTables& tables, std::span<co
     head_ = tail_ = 0;
     for (uint32_t lane = 0; lane < lanes; ++lane) {
         sources_.emplace_back(g, tables, source_index_[lane]);
+        lanes_.set(lane, sources_.back());
         enter(g.portals[source_index_[lane]].leaf, uint64_t{1} << lane); // p leads there: marked
     }
     flood(g, tables);
@@ -84,7 +85,8 @@ void BaseVisBatch::run(const Graph& g, const BaseVisTables& tables, std::span<co
 }
 
 // Leaves are entered in queue order with the lanes pending on them; for each portal leaving the
-// leaf, the lanes that have not reached its destination are tested, each on its own source.
+// leaf, the lanes that have not reached its destination are tested, each on its own source: the
+// spheres four lanes at a time (source_lanes.h), the rest one lane at a time.
 void BaseVisBatch::flood(const Graph& g, const BaseVisTables& tables)
 {
     while (head_ != tail_) {
@@ -94,29 +96,25 @@ void BaseVisBatch::flood(const Graph& g, const BaseVisTables& tables)
         pending_[leaf] = 0;
         const FloodSlot* header = &tables.slots[tables.leaf_slot[leaf]];
         const uint32_t first_entry = header->slot;
-        uint64_t front_asked = 0, front = 0; // SourcePortal::leaf_in_front per lane, asked once
+        const uint64_t front = lanes_.lanes_in_front(tables, header->sphere, entering);
         for (uint32_t j = 0; j < header->leaf; ++j) {
             const FloodSlot& t = header[1 + j];
-            uint64_t untested = entering & ~reached_[t.leaf];
+            const uint64_t untested = entering & ~reached_[t.leaf];
             if (untested == 0)
                 continue;
             const size_t k = first_entry + j;
-            uint64_t pass = 0;
-            do {
-                const uint32_t lane = uint32_t(std::countr_zero(untested));
+            const SphereVerdicts v = lanes_.sphere_verdicts(tables, t, untested, front);
+            uint64_t pass = v.might_see, near = untested & ~(v.might_see | v.cannot_see);
+            while (near != 0) {
+                const uint32_t lane = uint32_t(std::countr_zero(near));
                 const uint64_t bit = uint64_t{1} << lane;
-                untested &= untested - 1;
-                const SourcePortal& source = sources_[lane];
-                if ((front_asked & bit) == 0) {
-                    front_asked |= bit;
-                    front |= source.leaf_in_front(tables, *header) ? bit : 0;
-                }
-                const Verdict verdict = quick_verdict(tables, source, t, k, (front & bit) != 0);
+                near &= near - 1;
+                const Verdict verdict = verdict_near_planes(tables, sources_[lane], t, k, (front & bit) != 0);
                 if (verdict == Verdict::kMightSee ||
                     (verdict == Verdict::kUndecided &&
                      portal_might_see(g, g.portals[source_index_[lane]], g.portals[g.leaf_portals[k]])))
                     pass |= bit;
-            } while (untested != 0);
+            }
             if (pass != 0)
                 enter(t.leaf, pass);
         }

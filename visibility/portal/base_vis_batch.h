@@ -22,6 +22,7 @@
 
 #include "visibility/portal/base_vis_tables.h"
 #include "visibility/portal/portal_graph.h"
+#include "visibility/portal/source_lanes.h"
 
 #include <cstdint>
 #include <span>
@@ -29,7 +30,7 @@
 
 namespace pvs::portal_vis {
 
-constexpr uint32_t kBatchLanes = 64;
+constexpr uint32_t kBatchLanes = SourceLanes::kLanes;
 
 // Every directed portal once, ordered so that runs of kBatchLanes flood much the same leaves:
 // by the axis and sign of the normal's largest component, then by the leaf the portal leads into
@@ -58,6 +59,7 @@ private:
     std::vector<uint32_t> queue_;   // leaves with pending lanes, first in first out (a ring)
     uint32_t head_ = 0, tail_ = 0;
     std::vector<SourcePortal> sources_;
+    SourceLanes lanes_; // sources_, four lanes to a vector
     std::vector<uint32_t> source_index_;
     std::vector<uint64_t> rows_; // kBatchLanes dense rows
     std::vector<uint32_t> counts_;
