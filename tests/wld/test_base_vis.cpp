@@ -9,6 +9,7 @@
 //     zones.
 #include "visibility/portal/base_vis.h"
 #include "visibility/portal/base_vis_batch.h"
+#include "visibility/portal/source_lanes.h"
 
 #include "tests/support/test_data.h"
 #include "visibility/bit_row.h"
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <span>
 #include <cstdio>
 #include <string>
@@ -106,6 +108,57 @@ void expect_verdicts_agree(const Portals& portals, const std::string& name, doub
     std::printf("[ %-7s ] %zu directed portals, %zu pairs asked: %.2f %% decided in floats (%zu might see, "
                 "%zu cannot), slack %.4f\n",
                 name.c_str(), g.portals.size(), c.pairs, 100.0 * decided, c.might_see, c.cannot_see, tables.slack);
+}
+
+// SourceLanes (source_lanes.h) against quick_verdict, one lane at a time: every lane the
+// vectors decide is decided the same way by the scalar code, and every lane they leave is one
+// the scalar code's spheres leave to verdict_near_planes (it answers what verdict_near_planes
+// answers). All 64 lanes, in batches of the zone's portals in index order, against every slot.
+void expect_lanes_as_scalar(const Portals& portals, const char* name)
+{
+    const Graph g = portal_vis::build_graph(portals.set, portals.regions);
+    const portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
+    portal_vis::SourceLanes lanes;
+    size_t asked = 0, decided = 0, differing = 0;
+    for (uint32_t first = 0; first < g.portals.size(); first += 64 * kStride) {
+        std::vector<portal_vis::SourcePortal> sources;
+        for (uint32_t lane = 0; lane < 64 && first + lane < g.portals.size(); ++lane) {
+            sources.emplace_back(g, tables, first + lane);
+            lanes.set(lane, sources.back());
+        }
+        const uint64_t all = sources.size() == 64 ? ~uint64_t{0} : (uint64_t{1} << sources.size()) - 1;
+        for (uint32_t leaf = 0; leaf < g.leaf_count; ++leaf) {
+            const portal_vis::FloodSlot* header = &tables.slots[tables.leaf_slot[leaf]];
+            const uint64_t front = lanes.lanes_in_front(tables, header->sphere, all);
+            for (uint32_t j = 0; j < header->leaf; ++j) {
+                const size_t k = header->slot + j;
+                const portal_vis::SphereVerdicts v = lanes.sphere_verdicts(tables, header[1 + j], all, front);
+                for (uint32_t lane = 0; lane < sources.size(); ++lane) {
+                    const uint64_t bit = uint64_t{1} << lane;
+                    const bool in_front = sources[lane].leaf_in_front(tables, *header);
+                    const Verdict scalar = portal_vis::quick_verdict(tables, sources[lane], header[1 + j], k, in_front);
+                    const Verdict near =
+                        portal_vis::verdict_near_planes(tables, sources[lane], header[1 + j], k, in_front);
+                    const Verdict vector = (v.might_see & bit) != 0    ? Verdict::kMightSee
+                                           : (v.cannot_see & bit) != 0 ? Verdict::kCannotSee
+                                                                       : near;
+                    ++asked;
+                    decided += ((v.might_see | v.cannot_see) & bit) != 0;
+                    if (((front & bit) != 0) != in_front || vector != scalar) {
+                        if (differing++ < 5)
+                            ADD_FAILURE() << name << ": source " << first + lane << ", slot " << k
+                                          << ": lanes and scalar differ";
+                    }
+                }
+                EXPECT_EQ((v.might_see | v.cannot_see) & ~all, 0u);
+                EXPECT_EQ(v.might_see & v.cannot_see, 0u);
+            }
+        }
+    }
+    EXPECT_EQ(differing, 0u) << name;
+    EXPECT_GT(decided, asked / 2) << name << ": the spheres should decide most pairs";
+    std::printf("[ %-7s ] %zu lane tests, %.1f %% decided by the spheres\n", name, asked,
+                100.0 * double(decided) / double(std::max<size_t>(asked, 1)));
 }
 
 // A flood from p's destination through every portal portal_might_see passes: the definition of
@@ -218,6 +271,92 @@ TEST(BaseVisTables, CoordinatesBeyondFloatDistancesLeaveEverythingToTheExactTest
 TEST(BaseVisBatch, RowsAreThoseOfAPlainFloodOnAGeneratedZone)
 {
     expect_batches_of_plain_flood(generated_portals(150, 11));
+}
+
+TEST(SourceLanes, VerdictsAreTheScalarOnesOnAGeneratedZone)
+{
+    expect_lanes_as_scalar(generated_portals(120, 7), "gen 120");
+}
+
+TEST(SourceLanes, VerdictsAreTheScalarOnesOnARealMap)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+    const Zone* zone = test::shared_zone("quake/e1m1.bsp");
+    ASSERT_NE(zone, nullptr);
+    expect_lanes_as_scalar(map_portals(*zone), "e1m1");
+}
+
+// Real zones rarely put a sphere within ON_EPSILON of a plane, so the thresholds themselves
+// are asked here: each lane's sphere and each tested sphere placed at, just before and just
+// past every boundary of quick_verdict's sphere tests (a source's distance to the tested
+// portal's plane, the tested sphere's to the source's plane, the leaf's to the source's), on
+// unit planes along x, facing each other, each portal's points on its sphere's point nearest
+// the other's plane (so that where the points decide, the coplanar rule can turn them down).
+TEST(SourceLanes, VerdictsAreTheScalarOnesAtEveryThreshold)
+{
+    const Portals portals = generated_portals(20, 3);
+    const Graph g = portal_vis::build_graph(portals.set, portals.regions);
+    portal_vis::BaseVisTables tables = portal_vis::base_vis_tables(g);
+    const float slack = tables.slack_f, beyond = tables.beyond_f;
+    const uint32_t t_points = tables.point_first[1] - tables.point_first[0]; // entry 0's, t's below
+    const float jitters[] = {-0.5f * slack, -1e-6f, 0.0f, 1e-6f, 0.5f * slack, -0.3f * beyond, 0.3f * beyond};
+    // Offsets of a sphere's centre from a plane, given its radius r: each boundary +- jitter.
+    auto offsets = [&](float r) {
+        std::vector<float> out;
+        for (float boundary : {r + slack, -r - beyond, -r - slack, r + beyond, 0.0f})
+            for (float j : jitters)
+                out.push_back(boundary + j);
+        return out;
+    };
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> radius(0.0f, 40.0f);
+    portal_vis::SourceLanes lanes;
+    std::vector<portal_vis::SourcePortal> sources;
+    std::vector<portal_vis::Float3> points(64);
+    for (uint32_t lane = 0; lane < 64; ++lane) {
+        portal_vis::SourcePortal p(g, tables, lane % uint32_t(g.portals.size()));
+        // Facing t (whose plane is x = 100, normal +x).
+        p.plane = {-1.0f, 0.0f, 0.0f, -100.0f};
+        const float r = radius(rng);
+        const std::vector<float> o = offsets(r);
+        p.sphere = {100.0f + o[rng() % o.size()], 3.0f, -7.0f, r};
+        points[lane] = {p.sphere.x + r, 3.0f, -7.0f};
+        p.points = &points[lane];
+        p.point_count = 1;
+        sources.push_back(p);
+        lanes.set(lane, p);
+    }
+    size_t asked = 0, differing = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const float leaf_r = radius(rng);
+        const std::vector<float> leaf_o = offsets(leaf_r);
+        portal_vis::FloodSlot header;
+        header.sphere = {100.0f + leaf_o[rng() % leaf_o.size()], 0.0f, 0.0f, leaf_r};
+        portal_vis::FloodSlot t;
+        const float t_r = radius(rng);
+        const std::vector<float> t_o = offsets(t_r);
+        t.plane = {1.0f, 0.0f, 0.0f, 100.0f};
+        t.sphere = {100.0f + t_o[rng() % t_o.size()], -2.0f, 5.0f, t_r};
+        for (uint32_t j = 0; j < t_points; ++j) // all on its sphere's point nearest p's plane
+            tables.points[tables.point_first[0] + j] = {t.sphere.x + t_r, -2.0f, 5.0f};
+        const uint64_t all = ~uint64_t{0};
+        const uint64_t front = lanes.lanes_in_front(tables, header.sphere, all);
+        const portal_vis::SphereVerdicts v = lanes.sphere_verdicts(tables, t, all, front);
+        for (uint32_t lane = 0; lane < 64; ++lane) {
+            const uint64_t bit = uint64_t{1} << lane;
+            const bool in_front = sources[lane].leaf_in_front(tables, header);
+            const Verdict scalar = portal_vis::quick_verdict(tables, sources[lane], t, 0, in_front);
+            const Verdict vector = (v.might_see & bit) != 0    ? Verdict::kMightSee
+                                   : (v.cannot_see & bit) != 0 ? Verdict::kCannotSee
+                                                               : portal_vis::verdict_near_planes(
+                                                                     tables, sources[lane], t, 0, in_front);
+            ++asked;
+            if ((((front & bit) != 0) != in_front || vector != scalar) && differing++ < 5)
+                ADD_FAILURE() << "trial " << trial << " lane " << lane << ": lanes and scalar differ";
+        }
+    }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_EQ(asked, 2000u * 64u);
 }
 
 // Fewer leaves than lanes, and a first batch with a source into every leaf: every leaf is
