@@ -6,7 +6,7 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
+#include <glm/common.hpp>
 #include <tuple>
 
 namespace pvs::portal_vis {

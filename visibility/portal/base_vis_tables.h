@@ -68,21 +68,49 @@ inline float distance(const Float4& plane, const Float4& centre)
     return distance(plane, centre.x, centre.y, centre.z);
 }
 
+// Whether every portal leaving the leaf whose header sphere is `leaf` is certainly in front of
+// the source plane `p_plane` (test 1 passes for each).
+inline bool leaf_in_front(const BaseVisTables& tables, const Float4& p_plane, const Float4& leaf)
+{
+    return distance(p_plane, leaf) - leaf.w > tables.beyond_f;
+}
+
 // The source portal of one flood, as quick_verdict reads it.
 struct SourcePortal {
     Float4 plane, sphere;
     const Float3* points = nullptr; // its entry's run of BaseVisTables::points
     uint32_t point_count = 0;
     SourcePortal(const Graph& g, const BaseVisTables& tables, uint32_t pi);
-    // Whether every portal leaving the leaf of `header` is certainly in front of p (test 1
-    // passes for each).
     bool leaf_in_front(const BaseVisTables& tables, const FloodSlot& header) const
     {
-        return distance(plane, header.sphere) - header.sphere.w > tables.beyond_f;
+        return portal_vis::leaf_in_front(tables, plane, header.sphere);
     }
 };
 
 enum class Verdict : uint8_t { kUndecided, kMightSee, kCannotSee };
+
+// quick_verdict's sphere tests alone, for a source with float plane `p_plane` and sphere
+// `p_sphere`: kUndecided where they leave the pair to verdict_near_planes.
+inline Verdict sphere_verdict(const BaseVisTables& tables, const Float4& p_plane, const Float4& p_sphere,
+                              const FloodSlot& t, bool leaf_in_front)
+{
+    // 2. p's sphere against t's plane; 1. t's leaf's sphere, or its own, against p's plane.
+    const float d2 = distance(t.plane, p_sphere);
+    if (d2 - tables.slack_f > p_sphere.w)
+        return Verdict::kCannotSee;
+    const bool p_behind = -d2 - p_sphere.w > tables.beyond_f;
+    if (leaf_in_front) {
+        if (p_behind)
+            return Verdict::kMightSee;
+    } else {
+        const float d1 = distance(p_plane, t.sphere);
+        if (d1 + tables.slack_f < -t.sphere.w)
+            return Verdict::kCannotSee;
+        if (p_behind && d1 - t.sphere.w > tables.beyond_f)
+            return Verdict::kMightSee;
+    }
+    return Verdict::kUndecided;
+}
 
 // quick_verdict where the spheres do not decide: the points and the coplanar rule.
 Verdict verdict_near_planes(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
@@ -90,26 +118,13 @@ Verdict verdict_near_planes(const BaseVisTables& tables, const SourcePortal& p, 
 
 // portal_might_see's answer for the tested portal of slot `t`, entry k of Graph::leaf_portals,
 // when the floats make it certain, else kUndecided. `leaf_in_front`: SourcePortal::leaf_in_front
-// of the leaf the portal leaves. Inline, for the flood's loop: the spheres decide most pairs.
+// of the leaf the portal leaves. (Base vis asks the spheres of many sources at once,
+// source_lanes.h; this is the one-pair form its tests compare with.)
 inline Verdict quick_verdict(const BaseVisTables& tables, const SourcePortal& p, const FloodSlot& t, size_t k,
                              bool leaf_in_front)
 {
-    // 2. p's sphere against t's plane; 1. t's leaf's sphere, or its own, against p's plane.
-    const float d2 = distance(t.plane, p.sphere);
-    if (d2 - tables.slack_f > p.sphere.w)
-        return Verdict::kCannotSee;
-    const bool p_behind = -d2 - p.sphere.w > tables.beyond_f;
-    if (leaf_in_front) {
-        if (p_behind)
-            return Verdict::kMightSee;
-    } else {
-        const float d1 = distance(p.plane, t.sphere);
-        if (d1 + tables.slack_f < -t.sphere.w)
-            return Verdict::kCannotSee;
-        if (p_behind && d1 - t.sphere.w > tables.beyond_f)
-            return Verdict::kMightSee;
-    }
-    return verdict_near_planes(tables, p, t, k, leaf_in_front);
+    const Verdict spheres = sphere_verdict(tables, p.plane, p.sphere, t, leaf_in_front);
+    return spheres != Verdict::kUndecided ? spheres : verdict_near_planes(tables, p, t, k, leaf_in_front);
 }
 
 } // namespace pvs::portal_vis

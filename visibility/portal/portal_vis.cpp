@@ -11,7 +11,6 @@
 #include "visibility/portal/portal_vis.h"
 
 #include "visibility/bit_row.h"
-#include "visibility/portal/base_vis.h"
 #include "visibility/portal/base_vis_batch.h"
 #include "visibility/portal/flow.h"
 #include "visibility/portal/flow_order.h"
@@ -92,7 +91,6 @@ bool run_base_vis(Bake& b, bool full)
                 const std::span<const uint32_t> sources(&order[first], lanes);
                 batch.run(b.g, tables, sources);
                 for (uint32_t lane = 0; lane < lanes; ++lane) {
-                    encoded.clear();
                     encode_runs(batch.row(lane), encoded);
                     b.mightsee[sources[lane]] = b.might_pools[t].append(encoded);
                     b.nummightsee[sources[lane]] = batch.count(lane);

@@ -9,8 +9,8 @@
 // sphere_verdicts gives quick_verdict's answer where the spheres decide it (might_see /
 // cannot_see; a lane in neither is left to verdict_near_planes), computed with the same float
 // operations in the same order, so the masks are bit for bit what the scalar code answers.
-// Lanes outside `lanes` come out unset. SSE is part of x86-64's baseline; elsewhere the same
-// arithmetic runs one lane at a time.
+// Lanes outside `lanes` come out unset. SSE is part of x86-64's baseline; elsewhere each lane
+// asks the scalar functions of base_vis_tables.h (leaf_in_front, sphere_verdict) in turn.
 #pragma once
 
 #include "visibility/portal/base_vis_tables.h"
@@ -48,9 +48,7 @@ public:
             front |= uint64_t(unsigned(_mm_movemask_ps(over))) << q;
 #else
             for (uint32_t l = q; l < q + 4; ++l)
-                front |= uint64_t(px_[l] * leaf.x + py_[l] * leaf.y + pz_[l] * leaf.z - pw_[l] - leaf.w >
-                                  tables.beyond_f)
-                         << l;
+                front |= uint64_t(leaf_in_front(tables, plane(l), leaf)) << l;
 #endif
         });
         return front & lanes;
@@ -61,9 +59,9 @@ public:
     SphereVerdicts sphere_verdicts(const BaseVisTables& tables, const FloodSlot& t, uint64_t lanes,
                                    uint64_t front) const
     {
+#if defined(__SSE__)
         uint64_t cannot_a = 0, behind = 0, cannot_b = 0, see_b = 0;
         for_each_quad(lanes, [&](uint32_t q) {
-#if defined(__SSE__)
             const __m128 slack = _mm_set1_ps(tables.slack_f), beyond = _mm_set1_ps(tables.beyond_f);
             const __m128 r = _mm_loadu_ps(sr_ + q), t_r = _mm_set1_ps(t.sphere.w);
             // 2. d2: p's sphere centre against t's plane; 1. d1: t's sphere centre against p's plane.
@@ -74,25 +72,26 @@ public:
             behind |= mask(_mm_cmpgt_ps(_mm_sub_ps(minus_d2, r), beyond), q);
             cannot_b |= mask(_mm_cmplt_ps(_mm_add_ps(d1, slack), _mm_sub_ps(_mm_setzero_ps(), t_r)), q);
             see_b |= mask(_mm_cmpgt_ps(_mm_sub_ps(d1, t_r), beyond), q);
-#else
-            for (uint32_t l = q; l < q + 4; ++l) {
-                const float d2 = t.plane.x * sx_[l] + t.plane.y * sy_[l] + t.plane.z * sz_[l] - t.plane.w;
-                const float d1 = px_[l] * t.sphere.x + py_[l] * t.sphere.y + pz_[l] * t.sphere.z - pw_[l];
-                cannot_a |= uint64_t(d2 - tables.slack_f > sr_[l]) << l;
-                behind |= uint64_t(-d2 - sr_[l] > tables.beyond_f) << l;
-                cannot_b |= uint64_t(d1 + tables.slack_f < -t.sphere.w) << l;
-                see_b |= uint64_t(d1 - t.sphere.w > tables.beyond_f) << l;
-            }
-#endif
         });
-        // As quick_verdict: test 2's sphere first; then, where t's leaf is in front, test 2's
+        // As sphere_verdict: test 2's sphere first; then, where t's leaf is in front, test 2's
         // verdict alone, else t's own sphere against p's plane.
         const uint64_t might = ~cannot_a & behind & (front | see_b);
         const uint64_t cannot = cannot_a | (~front & cannot_b);
         return {might & lanes, cannot & ~might & lanes};
+#else
+        SphereVerdicts out;
+        for (uint64_t rest = lanes; rest != 0; rest &= rest - 1) {
+            const uint32_t l = uint32_t(std::countr_zero(rest));
+            const Verdict v = sphere_verdict(tables, plane(l), {sx_[l], sy_[l], sz_[l], sr_[l]}, t, (front >> l) & 1);
+            out.might_see |= uint64_t(v == Verdict::kMightSee) << l;
+            out.cannot_see |= uint64_t(v == Verdict::kCannotSee) << l;
+        }
+        return out;
+#endif
     }
 
 private:
+    Float4 plane(uint32_t l) const { return {px_[l], py_[l], pz_[l], pw_[l]}; }
     // visit(4q) for each quad of lanes (4q .. 4q + 3) with a lane in `lanes`.
     template <class Visit>
     static void for_each_quad(uint64_t lanes, Visit&& visit)
