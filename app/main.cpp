@@ -2,6 +2,7 @@
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together. The inspector
 // window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
 #include "app/cmd_bake.h"
+#include "app/cmd_check.h"
 #include "app/cmd_compare.h"
 #include "app/cmd_stability.h"
 #include "app/cmd_convert.h"
@@ -31,6 +32,7 @@ int main(int argc, char** argv)
     pvs::app::register_bake_command(app, exit_code);
     pvs::app::register_compare_command(app, exit_code);
     pvs::app::register_stability_command(app, exit_code);
+    pvs::app::register_check_command(app, exit_code);
     // The inspector is another executable (inspector_launch.h): checked here, opened there.
     pvs::app::register_inspect_command(app, exit_code,
                                        [argv](const pvs::app::InspectArguments&) { return pvs::app::launch_inspector(argv); });

@@ -5,6 +5,7 @@
 #include "visibility/file_error.h"
 #include "wld/doom/doom_specials.h"
 #include "wld/doom/doom_textures.h"
+#include "wld/doom/line_plane.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +23,14 @@ bool is_wall_seg(const GlSeg& seg) { return seg.linedef != kNoLinedef && seg.par
 
 glm::vec2 point(const DoomMap& map, uint32_t v) { return {float(map.vertices[v].x), float(map.vertices[v].y)}; }
 
-// The vertical plane through a->b with the right side in front.
+// The vertical plane through (ax, ay) along (dx, dy), the right side in front (line_plane.h: one
+// line, one plane, bit for bit, whichever of its points and direction lengths names it).
 BspNode line_node(double ax, double ay, double dx, double dy)
 {
-    const double length = std::hypot(dx, dy);
-    const double nx = dy / length, ny = -dx / length;
+    const LinePlane plane = vertical_line_plane(ax, ay, dx, dy);
     BspNode node{};
-    node.normal = glm::vec3(float(nx), float(ny), 0.0f);
-    node.dist = float(nx * ax + ny * ay);
+    node.normal = glm::vec3(plane.nx, plane.ny, 0.0f);
+    node.dist = plane.dist;
     return node;
 }
 
@@ -104,7 +105,12 @@ private:
                 const GlSeg& seg = map_.segs[ss.first_seg + k];
                 if (!is_wall_seg(seg))
                     continue;
-                const MapVertex a = map_.vertices[seg.v1], b = map_.vertices[seg.v2];
+                // The wall's plane is its linedef's line, not the seg's: a seg end can be a GL
+                // vertex rounded to 16.16, and a plane through it differs by ~1e-5 from the node
+                // built on the same linedef, leaving a sliver of solid along an open boundary.
+                const Linedef& line = map_.linedefs[seg.linedef];
+                const MapVertex a = map_.vertices[seg.side == 0 ? line.v1 : line.v2];
+                const MapVertex b = map_.vertices[seg.side == 0 ? line.v2 : line.v1];
                 if (a.x == b.x && a.y == b.y)
                     continue;
                 BspNode node = line_node(a.x, a.y, b.x - a.x, b.y - a.y);

@@ -7,7 +7,9 @@
 //   - one node per wall seg (a seg with a linedef and no partner: a one-sided wall), its
 //     right side (the subsector) in front, the back solid: so the tree's solid space is the
 //     void behind the walls, as in a Quake map, and the reference and the popping check trace
-//     through it;
+//     through it. Its plane is the linedef's line (not the seg's, whose end may be a rounded GL
+//     vertex), computed like every node's by vertical_line_plane (line_plane.h), so a wall on a
+//     partition line is that partition's plane bit for bit and leaves no sliver of solid;
 //   - then the sector's floor (front: above) and ceiling (front: below), each with a solid
 //     back. These height nodes come after every other node (BspTree::first_height_node):
 //     methods that follow glVIS and ignore heights walk past them (bsp_tree_edit.h), the
