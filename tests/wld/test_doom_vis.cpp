@@ -7,6 +7,7 @@
 #include "tests/wld/doom_test_maps.h"
 #include "visibility/bit_row.h"
 #include "visibility/methods/vis_method.h"
+#include "visibility/portal/portal_vis_2d.h"
 #include "wld/common/read_file.h"
 #include "wld/doom/doom_map.h"
 #include "wld/doom/doom_zone.h"
@@ -147,6 +148,67 @@ TEST(DoomVis, Freedoom2Map01MissesNothingTheReferenceFinds)
     EXPECT_EQ(bits_outside(reference, full), 0u);
     EXPECT_EQ(bits_outside(full, fast), 0u);
     EXPECT_LT(bits_outside(full, fast) + 1, bits_outside(fast, full)) << "full is tighter than fast";
+}
+
+// Four regions in a row joined by vertical portals at x = 0, 10 and 20 (z 0..10): A and B span
+// y 0..1, C spans y lo..3. Lines from A through B reach x = 20 at y in [-1, 2] (the separator
+// through (0, 0) and (10, 1) bounds them above), so region 0 sees region 3 exactly when lo < 2,
+// through a window 2 - lo wide. Known by construction, not by a vis tool.
+PortalSet three_openings(double lo)
+{
+    PortalSet set;
+    const auto add = [&](double x, double y0, double y1, int32_t back, int32_t front) {
+        Portal portal;
+        portal.regions[0] = front; // the +x side: normal (1, 0, 0) into regions[0]
+        portal.regions[1] = back;
+        portal.first_point = uint32_t(set.points.size());
+        portal.point_count = 4;
+        // Clockwise seen from the front (+x), as PRT1: Newell's normal points to -x.
+        for (const auto& [y, z] : {std::pair{y0, 10.0}, {y1, 10.0}, {y1, 0.0}, {y0, 0.0}})
+            set.points.emplace_back(float(x), float(y), float(z));
+        set.portals.push_back(portal);
+    };
+    add(0, 0, 1, 0, 1);
+    add(10, 0, 1, 1, 2);
+    add(20, lo, 3, 2, 3);
+    return set;
+}
+
+bool two_d_full_sees(const PortalSet& set, uint32_t from, uint32_t to)
+{
+    VisParams params;
+    params.threads = 1;
+    return bake_portal_vis_2d(set, 4, params).visible(from, to);
+}
+
+// glVIS's ON_EPSILON (0.1) dropped a target with no point more than 0.1 in front of a
+// separator: this 0.08-wide window was lost. The flow keeps it now, and still hides C when the
+// window is closed by 0.02.
+TEST(DoomVis2d, ASightLineNarrowerThanGlVisEpsilonIsKept)
+{
+    EXPECT_TRUE(two_d_full_sees(three_openings(1.92), 0, 3)) << "a window 0.08 wide";
+    EXPECT_TRUE(two_d_full_sees(three_openings(1.92), 3, 0)) << "the same window the other way";
+    EXPECT_TRUE(two_d_full_sees(three_openings(1.5), 0, 3));
+    EXPECT_FALSE(two_d_full_sees(three_openings(2.02), 0, 3)) << "closed by 0.02";
+    EXPECT_FALSE(two_d_full_sees(three_openings(2.02), 3, 0));
+    EXPECT_TRUE(two_d_full_sees(three_openings(2.02), 0, 2));
+}
+
+// The two directed pairs of MAP10 that glVIS's epsilon lost: sight lines about 2400 units long
+// that the sampled reference proves (each traced open as a 0.05 beam), whose reverse bits the
+// flow always held. glbsp 2.24's nodes (Debian's), so the subsector numbers are fixed.
+TEST(DoomVis, Freedoom2Map10KeepsThePairsGlVisEpsilonLost)
+{
+    FREEDOOM_OR_SKIP(wad_path, "freedoom2.wad");
+    GL_NODES_OR_SKIP(gwa_path, wad_path, GlBuilder::glbsp_v2);
+    const WadFile wad = read_wad(wad_path), gwa = read_wad(gwa_path);
+    const Zone zone = build_doom_zone(read_doom_map(wad, &gwa, "MAP10"), nullptr);
+    ASSERT_EQ(zone.region_count(), 2545u);
+    const Pvs full = run(zone, "portal-full");
+    for (const auto& [a, b] : {std::pair{876u, 2463u}, std::pair{968u, 2480u}}) {
+        EXPECT_TRUE(full.visible(a, b)) << a << " -> " << b;
+        EXPECT_TRUE(full.visible(b, a)) << b << " -> " << a;
+    }
 }
 
 } // namespace

@@ -14,7 +14,23 @@ namespace pvs {
 
 namespace {
 
-constexpr double kOnEpsilon = 0.1; // glVIS's ON_EPSILON (§4.5), as Quake's vis
+// The flow's tolerances (portal_vis_2d.h, "Conservative"):
+//  - kOnLine: a segment is in front of a line when some point of it is more than kOnLine in
+//    front. Lines through a segment with no point further in front pass within kOnLine of
+//    the line's wall: a window under 2 kOnLine wide, far below what a pixel or the reference's
+//    beam (0.05) can show, and exactly nothing for the collinear portals Doom's split lines make
+//    (walks along them would otherwise multiply). glVIS's ON_EPSILON was 0.1 here, which lost
+//    sight lines up to 0.1 wide.
+//  - kSlack: a clip keeps the part of a segment up to kSlack behind its line, a superset of the
+//    exact front part. kSlack is three orders above the round-off of a clip or a separator (a
+//    line through two points at least kMinSeparator apart, coordinates up to 2^15: its distance
+//    error 2^15 units away is about 1e-6).
+//  - kMinSeparator: separators through two points closer than this are not used (glVIS's
+//    ON_EPSILON as a length): not clipping is always safe, and a short base makes a line whose
+//    direction round-off grows with distance.
+constexpr double kOnLine = 1e-6;
+constexpr double kSlack = 1e-3;
+constexpr double kMinSeparator = 0.1;
 // Portals ranked more than this below a walk's own prune it with their final vis. Part of the
 // definition of the result. 8 rather than the 3-D baker's 32: the 2-D walks are short, so a
 // smaller lag seldom makes a thread wait and prunes more (MAP28 1.82 s -> 1.73 s).
@@ -82,7 +98,7 @@ bool project(const PortalSet& set, const Portal& portal, Segment& seg, Line& lin
                 seg.p[1] = {pts[j].x, pts[j].y};
             }
         }
-    if (best < kOnEpsilon * kOnEpsilon)
+    if (!(best > 0.0)) // a portal with any width is kept: dropping one would cut sight through it
         return false;
     line.d = dot(line.n, seg.p[0]);
     return true;
@@ -117,13 +133,14 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
     return g;
 }
 
+// Some point more than kOnLine in front of (behind) `l`.
 bool has_point_in_front(const Segment& s, const Line& l)
 {
-    return l.distance(s.p[0]) > kOnEpsilon || l.distance(s.p[1]) > kOnEpsilon;
+    return l.distance(s.p[0]) > kOnLine || l.distance(s.p[1]) > kOnLine;
 }
 bool has_point_behind(const Segment& s, const Line& l)
 {
-    return l.distance(s.p[0]) < -kOnEpsilon || l.distance(s.p[1]) < -kOnEpsilon;
+    return l.distance(s.p[0]) < -kOnLine || l.distance(s.p[1]) < -kOnLine;
 }
 
 // Base vis of directed portal pi: the leaves a flood through the portals in front of it reaches.
@@ -146,17 +163,18 @@ void base_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& stack, uint64_
     }
 }
 
-// Keeps the part of `s` in front of `l` (points within the epsilon count as on it and stay).
-// False when no point is in front; `s` unchanged when none is behind.
+// Keeps the part of `s` in front of `l`, and up to kSlack behind it: a superset of the exact
+// front part. False when no point of `s` is more than kOnLine in front; `s` unchanged when none
+// is more than kSlack behind.
 [[gnu::always_inline]] inline bool clip_front(Segment& s, const Line& l)
 {
     const double d0 = l.distance(s.p[0]), d1 = l.distance(s.p[1]);
-    const bool back0 = d0 < -kOnEpsilon, back1 = d1 < -kOnEpsilon;
+    if (!(d0 > kOnLine) && !(d1 > kOnLine))
+        return false;
+    const bool back0 = d0 < -kSlack, back1 = d1 < -kSlack;
     if (!back0 && !back1)
         return true;
-    if (!(d0 > kOnEpsilon) && !(d1 > kOnEpsilon))
-        return false;
-    const double t = d0 / (d0 - d1);
+    const double t = (d0 + kSlack) / (d0 - d1); // where the distance is -kSlack
     const Vec2 mid{s.p[0].x + t * (s.p[1].x - s.p[0].x), s.p[0].y + t * (s.p[1].y - s.p[0].y)};
     s.p[back0 ? 0 : 1] = mid;
     return true;
@@ -174,14 +192,16 @@ bool clip_to_separators(const Segment& source, const Segment& pass, Segment& tar
             const Vec2 b = pass.p[j];
             const Vec2 v{b.x - a.x, b.y - a.y};
             const double length2 = v.x * v.x + v.y * v.y;
-            if (length2 < kOnEpsilon * kOnEpsilon)
+            if (length2 < kMinSeparator * kMinSeparator)
                 continue;
-            // The candidate's unnormalised normal: distances are compared against the epsilon
-            // times its length, so only the line that is used needs a square root.
-            // (|d| <= eps * length is tested as d^2 <= eps^2 * length^2: no square root for the
-            // candidates that fail.)
+            // The candidate's unnormalised normal: distances are compared against kSlack times
+            // its length, so only the line that is used needs a square root. (|d| <= slack *
+            // length is tested as d^2 <= slack^2 * length^2.) A candidate is used only when the
+            // other source end is surely behind it and the other pass end surely in front: then
+            // every line from the source through the pass stays in front beyond the pass, so the
+            // clip removes nothing visible; an unsure candidate is skipped, which only adds.
             Vec2 n{-v.y, v.x};
-            const double limit2 = kOnEpsilon * kOnEpsilon * length2;
+            const double limit2 = kSlack * kSlack * length2;
             double ds = n.x * (other_a.x - b.x) + n.y * (other_a.y - b.y);
             if (ds * ds <= limit2)
                 continue; // the source lies along it
@@ -405,10 +425,9 @@ private:
 
     bool held(uint32_t ti, double s0, double s1, double p0, double p1, const Frame& rows) const
     {
-        constexpr double kSlack = 1e-9;
         for (uint32_t k = first_window_[ti]; k != kNone; k = windows_[k].next) {
             const Window& w = windows_[k];
-            if (w.s0 > s0 + kSlack || w.s1 < s1 - kSlack || w.p0 > p0 + kSlack || w.p1 < p1 - kSlack)
+            if (w.s0 > s0 || w.s1 < s1 || w.p0 > p0 || w.p1 < p1) // held only when truly inside
                 continue;
             bool holds = true;
             for (size_t word = rows.lo; word < rows.hi && holds; ++word) {
