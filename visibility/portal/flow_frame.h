@@ -99,8 +99,9 @@ inline WRef overflowed(Frame& f, int slot, const WRef& in)
 }
 
 // ericw's ClipStackWinding: the front part of `in`; the input itself when it has no point
-// behind, when all its points are on the plane, or when the result would not fit in a
-// frame's winding; an empty handle when nothing is in front. Frees `in` when it was one of
+// behind, when all its points are on the plane, when its points are only within ON_EPSILON in
+// front (some beyond kDropEpsilon: ericw drops such a winding, portal_graph.h) or when the
+// result would not fit in a frame's winding; an empty handle when nothing is in front. Frees `in` when it was one of
 // f's windings and a new one is returned (or none). `dists` and `sides`: scratch for at least
 // in.count + 1 entries. Inline: the flow, the passages and the target checks all clip in their
 // inner loops.
@@ -124,7 +125,7 @@ inline WRef clip_winding(const WRef& in, const DPlane& split, Frame& f, double* 
     const Vec normal = split.normal;
     const double dist = split.dist;
     // Branch-free: which side a point is on is data, not control flow.
-    uint32_t front = 0, back = 0;
+    uint32_t front = 0, back = 0, ahead = 0;
     for (uint32_t i = 0; i < n; ++i) {
         const double d = glm::dot(normal, points[i]) - dist;
         dists[i] = d;
@@ -132,12 +133,16 @@ inline WRef clip_winding(const WRef& in, const DPlane& split, Frame& f, double* 
         sides[i] = uint8_t(is_back + 2 * (1 - is_front - is_back)); // kFront, kBack or kOn
         front += is_front;
         back += is_back;
+        ahead += d > kDropEpsilon;
     }
     dists[n] = dists[0];
     sides[n] = sides[0];
     if (front == 0 && back == 0)
         return in; // lying on the plane: kept unclipped (ericw issue #261)
     if (front == 0) {
+        if (ahead)
+            return in; // in front by less than ON_EPSILON only: ericw drops it, which can lose a
+                       // sight line up to 0.1 wide; kept whole (conservative, kDropEpsilon)
         release_slot(in, f);
         return {};
     }

@@ -25,6 +25,12 @@ namespace pvs::portal_vis {
 
 // ericw-tools vis constants (§3.7).
 constexpr double kOnEpsilon = 0.1;            // VIS_ON_EPSILON: side tests, clips, separators
+// A clip drops a winding only when no point of it is more than this in front (flow_frame.h);
+// one with points only up to ON_EPSILON in front is kept whole. Below the reference's beam
+// margin (kBeamMargin, 0.05): a sight line the reference proves passes at least that far in
+// front of every plane that bounds it, so no such line is lost; above the float noise of
+// points on a shared edge (~1e-3), so walks do not go on through windings that only touch.
+constexpr double kDropEpsilon = 0.02;
 constexpr double kEqualEpsilon = 0.001;       // VIS_EQUAL_EPSILON: coplanar exit, per component
 constexpr double kCoplanarFacing = -0.99;     // base vis: coplanar portals facing each other
 constexpr double kSeparatorMinLengthSq = 0.1; // ClipToSeparators: unnormalised |cross|^2
