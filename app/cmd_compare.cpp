@@ -28,12 +28,12 @@ std::string csv_text(const ui::CompareResult& result)
 {
     std::ostringstream out;
     out << "method,params,bound,wall_s,cpu_s,peak_mib,estimate_mib,pvs_bytes,mean_visible,missing_bits,excess_bits,"
-           "rows_missing_bits,popping_pixels,crack_pixels,grazing_pixels,triangle_overdraw\n";
+           "rows_missing_bits,popping_pixels,crack_pixels,unknown_pixels,grazing_pixels,triangle_overdraw\n";
     for (const ui::CompareRow& r : result.rows)
         out << r.method << ',' << r.params << ',' << bound_name(r.bound) << ',' << r.wall_s << ',' << r.cpu_s << ','
             << r.peak_mib << ',' << r.estimate_mib << ',' << r.pvs_bytes << ',' << r.mean_visible << ','
             << r.missing_bits << ',' << r.excess_bits << ',' << r.rows_missing_bits << ',' << r.popping_pixels << ','
-            << r.crack_pixels << ',' << r.grazing_pixels << ',' << r.triangle_overdraw << '\n';
+            << r.crack_pixels << ',' << r.unknown_pixels << ',' << r.grazing_pixels << ',' << r.triangle_overdraw << '\n';
     return out.str();
 }
 
@@ -55,6 +55,8 @@ nlohmann::json json_report(const CompareCommandOptions& o, const Zone& zone, con
                         {"rows_missing_bits", r.rows_missing_bits},
                         {"popping_pixels", r.popping_pixels},
                         {"crack_pixels", r.crack_pixels},
+                        {"unknown_pixels", r.unknown_pixels},
+                        {"missing_pairs", r.missing_pairs},
                         {"grazing_pixels", r.grazing_pixels},
                         {"triangle_overdraw", r.triangle_overdraw},
                         {"summary", r.summary}});

@@ -82,7 +82,7 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
         throw FileError(file, 0, "cannot create the CSV file");
     out << "camera,x,y,z,yaw,pitch,region,camera_place,lookup_us,pvs_us,frustum_us,regions_total,regions_after_pvs,"
            "regions_drawn,triangles_total,triangles_after_pvs,triangles_drawn,render_ms,covered_pixels,"
-           "raster_popping_pixels,popping_cracks,popping_grazing,popping_unlisted,popping_confirmed,popping_regions,needed_triangles,"
+           "raster_popping_pixels,popping_cracks,popping_unknown,popping_grazing,popping_unlisted,popping_confirmed,popping_regions,needed_triangles,"
            "triangle_overdraw,region_overdraw\n";
     const char* places[] = {"region", "solid", "outside"};
     for (size_t i = 0; i < rows.size(); ++i) {
@@ -99,7 +99,7 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
             << ',' << r.cull.regions_total << ',' << r.cull.regions_after_pvs << ',' << r.cull.regions_after_frustum
             << ',' << r.cull.triangles_total << ',' << r.cull.triangles_after_pvs << ','
             << r.cull.triangles_after_frustum << ',' << r.render_ms << ',' << r.accuracy.covered_pixels << ','
-            << r.accuracy.popping_pixels << ',' << r.popping_cracks << ',' << r.popping_grazing << ',' << r.popping_unlisted << ',' << r.popping_confirmed << ','
+            << r.accuracy.popping_pixels << ',' << r.popping_cracks << ',' << r.popping_unknown << ',' << r.popping_grazing << ',' << r.popping_unlisted << ',' << r.popping_confirmed << ','
             << popping_regions << ',' << r.accuracy.needed_triangles << ',' << r.accuracy.triangle_overdraw() << ','
             << r.accuracy.region_overdraw() << '\n';
     }
@@ -108,7 +108,8 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
 void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOptions& o)
 {
     std::vector<double> cull_us, regions, triangles, tri_over, region_over, render_ms;
-    uint64_t raster_popping = 0, confirmed = 0, cracks = 0, grazing = 0, unlisted = 0, popping_cameras = 0, outside = 0;
+    uint64_t raster_popping = 0, confirmed = 0, cracks = 0, unknown = 0, grazing = 0, unlisted = 0, popping_cameras = 0,
+             outside = 0;
     for (const ui::WalkRow& r : rows) {
         cull_us.push_back(r.cull.lookup_us + r.cull.pvs_us + r.cull.frustum_us);
         regions.push_back(r.cull.regions_after_frustum);
@@ -119,6 +120,7 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
         raster_popping += r.accuracy.popping_pixels;
         confirmed += r.popping_confirmed;
         cracks += r.popping_cracks;
+        unknown += r.popping_unknown;
         grazing += r.popping_grazing;
         unlisted += r.popping_unlisted;
         popping_cameras += r.popping_confirmed > 0;
@@ -138,11 +140,13 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
     if (o.render_time)
         line("render time (ms)", render_ms);
     std::printf("  popping: %llu pixels confirmed (sight line open in the BSP tree, or to the face first in the mesh) on %llu cameras; %llu raster "
-                "pixels, %llu of them cracks (sight line blocked by a wall: a gap between triangles), %llu grazing "
+                "pixels, %llu of them cracks (sight line blocked by a wall: a gap between triangles), %llu unknown "
+                "(the sight check cannot decide: a face seen edge-on, no tree), %llu grazing "
                 "(open by less than %.2f units past a wall's edge), %llu unlisted (seen from a kept region that "
                 "does not list the face)\n",
                 static_cast<unsigned long long>(confirmed), static_cast<unsigned long long>(popping_cameras),
                 static_cast<unsigned long long>(raster_popping), static_cast<unsigned long long>(cracks),
+                static_cast<unsigned long long>(unknown),
                 static_cast<unsigned long long>(grazing), kSightMargin, static_cast<unsigned long long>(unlisted));
     std::vector<size_t> order(rows.size());
     for (size_t i = 0; i < order.size(); ++i)

@@ -69,7 +69,7 @@ private:
     TreeTracer::Scratch scratch_;
 };
 
-// Splits the raster popping pixels into confirmed, unlisted, grazing and cracks.
+// Splits the raster popping pixels into confirmed, unlisted, grazing, cracks and unknown.
 void confirm_popping(const FaceRegions& face_regions, const Image& ids, const std::vector<uint8_t>& region_drawn,
                      PixelSights& sights, WalkRow& row)
 {
@@ -89,6 +89,10 @@ void confirm_popping(const FaceRegions& face_regions, const Image& ids, const st
             const SightResult& sight = sights.at(x, y, face);
             if (sight.sight == Sight::Grazing) {
                 ++row.popping_grazing;
+                continue;
+            }
+            if (sight.sight == Sight::Unknown) {
+                ++row.popping_unknown;
                 continue;
             }
             if (sight.sight != Sight::Open) {

@@ -7,7 +7,8 @@
 // zone's geometry (visibility/eval/sight_check.h: traced through the BSP tree's leaves). A
 // rasteriser shows, here and there, a pixel of a face behind a crack between two triangles of a
 // wall (T-junction gaps); those pixels are Blocked by the wall's solid leaf and are counted apart
-// as cracks, as are pixels the check cannot decide (no tree, a face seen edge-on). Pixels whose
+// as cracks; pixels the check cannot decide (no tree, a face seen edge-on) are counted apart as
+// unknown. Pixels whose
 // line is open but passes within kSightMargin of a wall's edge are grazing, counted apart too.
 // A confirmed pixel's line ends in a region the culler dropped (the PVS's failure); an open line
 // that ends in a region it kept, at a face none of the kept regions lists, is "unlisted": the
@@ -37,7 +38,8 @@ struct WalkRow {
     double render_ms = 0; // textured render of the culled frame; 0 unless timed
     ImageAccuracy accuracy; // raster popping (accuracy.popping_pixels) and overdraw
     uint64_t popping_confirmed = 0; // raster popping pixels whose sight line is open: true popping
-    uint64_t popping_cracks = 0;    // raster popping pixels whose sight line is blocked or undecided
+    uint64_t popping_cracks = 0;    // raster popping pixels whose sight line is blocked
+    uint64_t popping_unknown = 0;   // raster popping pixels the sight check cannot decide (Sight::Unknown)
     uint64_t popping_unlisted = 0;  // open sight lines that end in a region the culler kept, at a
                                     // face no kept region lists: the zone's face lists, not the PVS
     uint64_t popping_grazing = 0;   // raster popping pixels whose sight line is open by less than

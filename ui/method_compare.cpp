@@ -169,6 +169,7 @@ void measure_walk(const Zone& zone, const CompareOptions& o, CompareResult& resu
         for (const WalkRow& w : walks[p]) {
             row.popping_pixels += w.popping_confirmed;
             row.crack_pixels += w.popping_cracks;
+            row.unknown_pixels += w.popping_unknown;
             row.grazing_pixels += w.popping_grazing;
             overdraw += w.accuracy.triangle_overdraw();
         }
@@ -262,6 +263,7 @@ CompareResult run_compare(const Zone& zone, const CompareOptions& options)
         row.missing_bits = gap.missing_bits;
         row.excess_bits = gap.excess_bits;
         row.rows_missing_bits = gap.rows_missing_bits;
+        row.missing_pairs = gap.missing_pairs;
         row.mean_visible = gap.mean_visible;
     }
     result.reference_bits = pvs_gap(&reference, reference).bits;

@@ -59,8 +59,10 @@ struct CompareRow {
     double mean_visible = 0;
     uint64_t missing_bits = 0, excess_bits = 0;
     uint32_t rows_missing_bits = 0;
+    std::vector<std::pair<uint32_t, uint32_t>> missing_pairs; // the first few (row, region) missing, pvs_gap.h
     uint64_t popping_pixels = 0;    // confirmed by the tree trace, over all cameras
-    uint64_t crack_pixels = 0;      // raster popping the trace rejected
+    uint64_t crack_pixels = 0;      // raster popping the trace rejected (blocked by a wall)
+    uint64_t unknown_pixels = 0;    // raster popping the trace cannot decide (a face seen edge-on, no tree)
     uint64_t grazing_pixels = 0;    // raster popping open only by less than kSightMargin
     double triangle_overdraw = 0;   // mean over cameras (drawn / needed triangles)
     std::string summary;

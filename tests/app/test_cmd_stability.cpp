@@ -42,6 +42,11 @@ TEST_F(StabilityCommand, WritesEveryMethodAndTransform)
         for (const char* field : {"method", "transform", "changed_bits", "missing_bits", "seconds"})
             EXPECT_TRUE(row.contains(field)) << field;
         EXPECT_EQ(row["missing_bits"], 0) << row.dump();
+        // A transform that is exact in floats (translations by powers of two, quarter turns,
+        // mirrors) must not change a bit of a deterministic bake.
+        if (row.contains("exact") && row["exact"].get<bool>()) {
+            EXPECT_EQ(row["changed_bits"], 0) << row.dump();
+        }
     }
     EXPECT_EQ(read_text(o.csv).rfind("method,params,transform,exact,changed_bits,", 0), 0u);
 
@@ -69,6 +74,14 @@ TEST_F(StabilityCommand, RunsTheCraftedCases)
         for (const char* field : {"case", "method", "bound", "truth_bits", "missing_bits", "excess_bits", "broken"})
             EXPECT_TRUE(row.contains(field)) << field;
         EXPECT_FALSE(row["broken"].get<bool>()) << row.dump();
+        // Against a case's known truth, an upper bound misses nothing and a lower bound adds nothing.
+        if (row["bound"] == "upper") {
+            EXPECT_EQ(row["missing_bits"], 0) << row.dump();
+        }
+        if (row["bound"] == "lower") {
+            EXPECT_EQ(row["excess_bits"], 0) << row.dump();
+        }
+        EXPECT_GT(row["truth_bits"].get<uint64_t>(), 0u) << row.dump();
     }
     EXPECT_EQ(j["rows"][0]["method"], "portal-full");
     EXPECT_EQ(j["rows"][0]["missing_bits"], 0);

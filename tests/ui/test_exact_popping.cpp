@@ -103,6 +103,7 @@ TEST(ExactPopping, ACrackInTheMeshIsNotPopping)
     EXPECT_GT(rows[0].accuracy.popping_pixels, 100u) << "the far wall shows through the 1-unit crack";
     EXPECT_EQ(rows[0].popping_confirmed, 0u) << "the slab is solid in the tree: no sight line is open";
     EXPECT_EQ(rows[0].popping_cracks, rows[0].accuracy.popping_pixels);
+    EXPECT_EQ(rows[0].popping_unknown, 0u) << "every crack pixel's sight line is decided: blocked";
     EXPECT_TRUE(rows[0].confirmed_regions.empty());
 }
 
@@ -121,6 +122,10 @@ TEST(ExactPopping, ARemovedBitPopsConfirmedWithItsRegion)
     EXPECT_EQ(rows[0].popping_confirmed, kept[0].accuracy.covered_pixels) << "every pixel of the far wall pops";
     EXPECT_EQ(rows[0].popping_cracks, 0u);
     EXPECT_EQ(rows[0].confirmed_regions, std::vector<uint32_t>{1});
+    // Every raster popping pixel lands in exactly one class.
+    EXPECT_EQ(rows[0].popping_confirmed + rows[0].popping_cracks + rows[0].popping_unknown + rows[0].popping_grazing +
+                  rows[0].popping_unlisted,
+              rows[0].accuracy.popping_pixels);
 }
 
 } // namespace

@@ -33,6 +33,9 @@ PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference)
             row_missing += uint64_t(std::popcount(theirs[w] & ~ours[w]));
             gap.excess_bits += uint64_t(std::popcount(ours[w] & ~theirs[w]));
         }
+        for (size_t w = 0; w < words && row_missing && gap.missing_pairs.size() < kListedMissingPairs; ++w)
+            for (uint64_t m = theirs[w] & ~ours[w]; m && gap.missing_pairs.size() < kListedMissingPairs; m &= m - 1)
+                gap.missing_pairs.emplace_back(r, uint32_t(w * 64 + size_t(std::countr_zero(m))));
         gap.missing_bits += row_missing;
         gap.rows_missing_bits += row_missing ? 1 : 0;
     }

@@ -11,6 +11,8 @@
 #include "visibility/pvs.h"
 
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 namespace pvs {
 
@@ -21,7 +23,12 @@ struct PvsGap {
     uint64_t excess_bits = 0;
     uint32_t rows_missing_bits = 0; // rows with at least one missing bit
     double mean_visible = 0.0;      // bits / rows
+    // The first kListedMissingPairs missing pairs (row, region), in row order: what a user opens
+    // to see why (compare's JSON, the inspector's Compare panel).
+    std::vector<std::pair<uint32_t, uint32_t>> missing_pairs;
 };
+
+inline constexpr size_t kListedMissingPairs = 64;
 
 PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference);
 
