@@ -30,13 +30,13 @@ void print_text(const Zone& zone, const ZoneHealth& health, bool strict)
     std::printf("%s\n  %s, %zu regions\n\n", zone.source.path.c_str(), zone.source.format.c_str(), zone.regions.size());
     for (const CheckItem& item : health.items) {
         const char* status = !item.applicable ? "n/a" : item.passed() ? "ok" : check_severity_name(item.severity);
-        std::printf("  %-17s %-8s %s\n", item.name.c_str(), status, item.summary.c_str());
+        std::printf("  %-19s %-8s %s\n", item.name.c_str(), status, item.summary.c_str());
         for (const std::string& example : item.examples)
-            std::printf("  %-17s          %s\n", "", example.c_str());
+            std::printf("  %-19s          %s\n", "", example.c_str());
         if (item.failed > item.examples.size())
-            std::printf("  %-17s          ... and %zu more\n", "", item.failed - item.examples.size());
+            std::printf("  %-19s          ... and %zu more\n", "", item.failed - item.examples.size());
     }
-    const bool healthy = health.errors() == 0 && (!strict || health.warnings() == 0);
+    const bool healthy = check_exit_code(health, strict) == 0;
     std::printf("\n%s: %zu failed error checks, %zu failed warning checks%s\n", healthy ? "healthy" : "UNHEALTHY",
                 health.errors(), health.warnings(), strict ? " (--strict: warnings count)" : "");
 }
@@ -53,7 +53,7 @@ int run_check(const CheckCommandOptions& o)
             std::cout << zone_health_json(zone, health).dump(2) << "\n";
         else
             print_text(zone, health, o.strict);
-        return health.errors() == 0 && (!o.strict || health.warnings() == 0) ? 0 : 1;
+        return check_exit_code(health, o.strict);
     } catch (const FileError& e) {
         std::fprintf(stderr, "pvscope: error: %s\n", e.what());
         return 2;
@@ -61,6 +61,11 @@ int run_check(const CheckCommandOptions& o)
 }
 
 } // namespace
+
+int check_exit_code(const ZoneHealth& health, bool strict)
+{
+    return health.errors() == 0 && (!strict || health.warnings() == 0) ? 0 : 1;
+}
 
 void register_check_command(CLI::App& app, int& exit_code)
 {

@@ -8,7 +8,15 @@
 #include <CLI/App.hpp>
 
 
+namespace pvs {
+struct ZoneHealth;
+}
+
 namespace pvs::app {
+
+// The exit code for a report: 0 healthy, 1 when an error check failed (or, with `strict`, any
+// warning check).
+int check_exit_code(const ZoneHealth& health, bool strict);
 
 void register_check_command(CLI::App& app, int& exit_code);
 

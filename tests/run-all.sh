@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds pvscope with AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, then runs
 # every test (ctest), then a smoke run of every libFuzzer target (tests/fuzz/run-smoke.sh: clang,
-# its own build folder, ~20 s a target; PVSCOPE_SKIP_FUZZ_SMOKE=1 leaves it out).
+# its own build folder, ~20 s a target; PVSCOPE_SKIP_FUZZ_SMOKE=1 leaves it out). Tests labelled
+# "slow" run only with PVSCOPE_SLOW_TESTS=1 (or `ctest -L slow` in a build folder).
 # This is the README's test command and what .ci/run calls.
 # Tests that need ../shared/data skip with a message when it is absent; set
 # PVSCOPE_REQUIRE_SHARED_DATA=1 to make its absence a failure (CI does).
@@ -11,7 +12,12 @@ build=${PVSCOPE_TEST_BUILD_DIR:-build-test}
 jobs=${PVSCOPE_JOBS:-$(nproc)}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVSCOPE_SANITIZE=ON -DPVSCOPE_WERROR=ON
 cmake --build "$build" -j "$jobs"
-ctest --test-dir "$build" --output-on-failure -j "$jobs"
+ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE slow
+# Tests labelled "slow" (the converged reference within every conservative method, on every
+# shared level: minutes even in Release, several times that under the sanitizers) run when asked.
+if [ "${PVSCOPE_SLOW_TESTS:-0}" = 1 ]; then
+  ctest --test-dir "$build" --output-on-failure -L slow
+fi
 if [ "${PVSCOPE_SKIP_FUZZ_SMOKE:-0}" != 1 ]; then
   PVSCOPE_JOBS=$jobs tests/fuzz/run-smoke.sh
 fi

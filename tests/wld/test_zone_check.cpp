@@ -208,5 +208,44 @@ TEST(ZoneCheck, EveryFreedoomMapHasEveryCrossingOpenWithGlbspAndZdbspNodes)
     EXPECT_EQ(maps, 2u * (36 + 32));
 }
 
+// glVIS's own GL_PVS of MAP10 (made elsewhere: ../shared/data/doom): 525 297 set bits (its README),
+// every row holding its subsector and every neighbour across an opening; glVIS's flow is not
+// symmetric, and the check counts the bits without a reverse.
+TEST(ZoneCheck, GlVisPvsOfMap10HoldsItsNeighboursAndItsKnownBits)
+{
+    SHARED_DATA_OR_SKIP(gwa, "doom/freedoom2-MAP10.glvis.gwa");
+    FREEDOOM_OR_SKIP(wad, "freedoom2.wad");
+    ZoneLoadOptions options;
+    options.map = "MAP10";
+    options.gwa = gwa;
+    const Zone zone = load_zone(wad, options);
+    const ZoneHealth health = check_zone(zone);
+    EXPECT_EQ(health.errors(), 0u);
+    EXPECT_EQ(health.warnings(), 0u);
+    EXPECT_EQ(health.item("pvs_symmetry")->checked, 525297u);
+    EXPECT_GT(health.item("pvs_symmetry")->failed, 0u);
+    EXPECT_EQ(health.item("pvs_neighbours")->failed, 0u);
+    EXPECT_GT(health.item("pvs_neighbours")->checked, 10000u);
+    EXPECT_EQ(health.item("pvs_self")->failed, 0u);
+}
+
+// A row that lacks a neighbour across a portal is a warning (a camera crossing there would see
+// the region pop in), and the only failed check.
+TEST(ZoneCheck, ARowWithoutItsPortalNeighbourIsAWarning)
+{
+    Zone zone = split_box(0.0f);
+    zone.baked_pvs = Pvs::build(2, [](uint32_t r, std::span<uint64_t> row) {
+        row[0] = r == 0 ? 0b01u : 0b11u; // 0 sees only itself; 1 sees both
+        return true;
+    });
+    const ZoneHealth health = check_zone(zone);
+    EXPECT_EQ(health.errors(), 0u);
+    EXPECT_EQ(health.warnings(), 1u);
+    EXPECT_EQ(health.item("pvs_neighbours")->failed, 1u);
+    EXPECT_EQ(health.item("pvs_neighbours")->examples.at(0), "0 -> 1");
+    EXPECT_EQ(health.item("pvs_symmetry")->failed, 1u) << "1 sees 0, 0 does not see 1";
+    EXPECT_TRUE(health.item("pvs_self")->passed());
+}
+
 } // namespace
 } // namespace pvs

@@ -104,8 +104,8 @@ void check_tree(const Zone& zone, const CheckOptions& options, std::vector<Check
     size_t unreached = 0;
     for (uint8_t r : reached)
         unreached += r == 0;
-    items.push_back(b.done(format("%zu nodes and leaves reached from the root; %zu nodes not reached (other models')",
-                                  b.item.checked, unreached)));
+    items.push_back(b.done(format("%zu nodes and leaves reached from the root; %zu nodes not reached%s", b.item.checked,
+                                  unreached, unreached ? " (other models' trees, or unused)" : "")));
 
     ItemBuilder r("tree_regions", CheckSeverity::Warning, options.max_examples);
     for (size_t i = 0; i < region_named.size(); ++i) {
