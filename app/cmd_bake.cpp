@@ -333,7 +333,10 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::
                                             " regions now, " + std::to_string(in.zone.region_count()) + " when it was read");
     }
     // The other formats through the writer the inspector's Save uses too.
-    const PvsWriteback written = write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output);
+    PvsWriteOptions write_options;
+    write_options.quake_ambient = o.ambient;
+    const PvsWriteback written =
+        write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output, write_options);
     for (const std::string& note : written.notes)
         std::fprintf(err, "note: %s\n", note.c_str());
     std::fprintf(err, "%s\n", written.summary.c_str());
@@ -659,6 +662,8 @@ void register_bake_command(CLI::App& app, int& exit_code)
                                            "doors and lifts count as built: only for maps whose sectors never move). "
                                            "Default: 2-D, as glVIS");
     cmd->add_flag("--reject", o->reject, "Doom: also rebuild the map's REJECT from the PVS (as glVIS does)");
+    cmd->add_flag("!--no-ambient", o->ambient,
+                  "Quake: keep the map's ambient sound levels instead of computing them from the new PVS (as vis does)");
     cmd->add_option("--apply-edits", o->apply_edits, "Apply this PVS edit list (saved by the inspector) to the bake "
                                                      "before writing it: hand fixes that survive a re-vis")
         ->check(CLI::ExistingFile);

@@ -73,6 +73,9 @@ struct BakeOptions {
     bool heights = false;
     bool reject = false;
     bool in_place = false;
+    // Quake maps: ambient sound levels computed from the new rows, as vis writes them (false: the
+    // file's levels are kept).
+    bool ambient = true;
     // A PVS edit list (wld/pvs_edit_list.h) applied to the bake before it is written: hand fixes
     // that survive a re-vis.
     std::string apply_edits;

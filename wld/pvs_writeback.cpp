@@ -9,6 +9,7 @@
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/hepvs/hepvs_file.h"
 #include "wld/hepvs/hepvs_zone.h"
+#include "wld/quake/bsp_layout.h"
 #include "wld/obj/obj_reader.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp29_vis_writer.h"
@@ -43,7 +44,7 @@ PvsWriteback write_gl_pvs_of(const Zone& zone, const ZoneLoadOptions& load, cons
 } // namespace
 
 PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,
-                                      const std::string& out_path)
+                                      const std::string& out_path, const PvsWriteOptions& options)
 {
     const std::string& path = zone.source.path;
     std::error_code ec;
@@ -53,11 +54,21 @@ PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& l
     if (zone.view_grid)
         return write_hepvs_of(zone, pvs, out_path);
     const std::vector<uint8_t> bytes = read_whole_file(path);
-    if (quake::looks_like_bsp29(bytes)) {
+    if (quake::detect_bsp_variant(bytes)) {
         quake::Bsp29VisStats stats;
-        write_whole_file(out_path, quake::write_bsp29_vis(bytes, pvs, path, &stats));
+        std::vector<quake::AmbientLevels> ambient;
+        if (options.quake_ambient)
+            ambient = quake::compute_ambient_levels(bytes, pvs, options.ambient, path);
+        write_whole_file(out_path, quake::write_bsp29_vis(bytes, pvs, path, &stats, ambient));
+        size_t with_sound = 0;
+        for (const quake::AmbientLevels& levels : ambient)
+            with_sound += levels != quake::AmbientLevels{0, 0, 0, 0};
+        const std::string sounds = options.quake_ambient
+                                       ? ", ambient sounds on " + std::to_string(with_sound) + " of " +
+                                             std::to_string(ambient.size()) + " leaves"
+                                       : ", ambient sounds kept as they were";
         return {"wrote " + out_path + ": " + std::to_string(stats.rows) + " rows, " + std::to_string(stats.unique_rows) +
-                    " distinct, " + std::to_string(stats.visdata_bytes) + " bytes of visdata",
+                    " distinct, " + std::to_string(stats.visdata_bytes) + " bytes of visdata" + sounds,
                 {}};
     }
     if (doom::looks_like_wad(bytes))

@@ -1,7 +1,9 @@
 // A PVS written back into the format its zone was read from, into a new file: what `pvscope
 // bake -o` writes and what the inspector's "Save PVS" writes, through the same writers:
-//   Quake BSP 29 -> the .bsp with new visdata, every other lump byte for byte
-//                   (quake/bsp29_vis_writer.h);
+//   Quake BSP     -> the .bsp (29, BSP2 or 2PSB) with new visdata and, as Quake's vis does, the
+//                   leaves' ambient sound levels computed from the new rows (unless
+//                   PvsWriteOptions::quake_ambient is off: the file's levels stay); every other
+//                   lump byte for byte (quake/bsp29_vis_writer.h, quake/ambient_sounds.h);
 //   EverQuest S3D -> the zone written again with the rows as its VISLISTs (convert.h);
 //   OBJ + .hepvs  -> a .hepvs of the zone's grid (hepvs/hepvs_zone.h);
 //   Doom WAD      -> a copy of the file holding the map's GL nodes with GL_PVS set
@@ -13,6 +15,7 @@
 
 #include "visibility/pvs.h"
 #include "visibility/zone.h"
+#include "wld/quake/ambient_sounds.h"
 #include "wld/zone_file.h"
 
 #include <string>
@@ -20,12 +23,17 @@
 
 namespace pvs {
 
+struct PvsWriteOptions {
+    bool quake_ambient = true;          // Quake: write ambient sound levels from the new rows
+    quake::AmbientOptions ambient;      // which texture classes count (vis's -noambient* switches)
+};
+
 struct PvsWriteback {
     std::string summary;            // one line for the user: what was written
     std::vector<std::string> notes; // what the writer had to say (S3D)
 };
 
 PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,
-                                      const std::string& out_path);
+                                      const std::string& out_path, const PvsWriteOptions& options = {});
 
 } // namespace pvs

@@ -18,8 +18,10 @@
 #include "wld/common/read_file.h"
 #include "wld/convert.h"
 #include "wld/pvs_edit_list.h"
+#include "wld/quake/ambient_sounds.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
+#include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -364,6 +366,42 @@ TEST_F(BakeCommand, ApplyEditsAfterTheBake)
             if (!(r == 0 && (c == seen || c == unseen)))
                 other_differences += edited.baked_pvs->visible(r, c) != plain.baked_pvs->visible(r, c);
     EXPECT_EQ(other_differences, 0u);
+}
+
+} // namespace
+} // namespace pvs::test
+
+namespace pvs::test {
+namespace {
+
+// A Quake map baked as vis bakes it gets ambient sound levels from its new rows (the same code as
+// `--ambient-only` would run: computed from the written file's own PVS they come out the same),
+// and --no-ambient keeps what qbsp wrote (zeros).
+TEST_F(BakeCommand, QuakeBakeWritesAmbientLevelsUnlessTold)
+{
+    SHARED_DATA_OR_SKIP(map, "modern-quake/q1/lqdm2.bsp");
+    SHARED_DATA_OR_SKIP(prt, "modern-quake/q1/lqdm2.prt");
+    app::BakeOptions o;
+    o.input = map;
+    o.prt_in = prt;
+    o.output = path("vised.bsp");
+    o.threads = 2;
+    ASSERT_EQ(run(o), 0) << err_;
+    EXPECT_NE(err_.find("ambient sounds on"), std::string::npos) << err_;
+    const std::vector<uint8_t> written = read_bytes(o.output);
+    const Zone vised = load_zone(o.output);
+    const std::vector<quake::AmbientLevels> levels = quake::read_ambient_levels(written, o.output);
+    EXPECT_EQ(levels, quake::compute_ambient_levels(written, *vised.baked_pvs, {}, o.output));
+    size_t with_sky = 0;
+    for (const quake::AmbientLevels& l : levels)
+        with_sky += l[quake::kAmbientSky] == 255;
+    EXPECT_GT(with_sky, levels.size() / 3) << "lqdm2 is open to the sky";
+
+    o.ambient = false;
+    o.output = path("kept.bsp");
+    ASSERT_EQ(run(o), 0) << err_;
+    for (const quake::AmbientLevels& l : quake::read_ambient_levels(read_bytes(o.output), o.output))
+        ASSERT_EQ(l, (quake::AmbientLevels{0, 0, 0, 0})) << "qbsp writes no levels";
 }
 
 } // namespace

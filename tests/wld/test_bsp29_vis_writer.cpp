@@ -99,6 +99,41 @@ TEST_P(VisWriter, TheFilesOwnPvsReadsBackRowForRow)
 INSTANTIATE_TEST_SUITE_P(Maps, VisWriter, ::testing::Values("quake/e1m1.bsp", "visdemo/example.bsp"),
                          [](const auto& p) { return test::param_name(p.param); });
 
+// With ambient levels, leaf r+1's four ambient bytes are the ones given and nothing else changes
+// beyond visofs: computed from a PVS that is not the file's (every leaf sees only itself), the
+// levels are those of each leaf's own surfaces, and read back as written.
+TEST(VisWriter, AmbientLevelsGoIntoTheLeavesAndNothingElseMoves)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+    const std::vector<uint8_t> original = test::read_bytes(path);
+    const Zone zone = quake::load_bsp29(original, path);
+    const uint32_t n = uint32_t(zone.region_count());
+    const Pvs alone = Pvs::build(n, [](uint32_t r, std::span<uint64_t> row) {
+        bits::set(row, r);
+        return true;
+    });
+    const std::vector<quake::AmbientLevels> levels = quake::compute_ambient_levels(original, alone, {}, path);
+    const std::vector<uint8_t> written = quake::write_bsp29_vis(original, alone, "out.bsp", nullptr, levels);
+    EXPECT_EQ(quake::read_ambient_levels(written, "out.bsp"), levels);
+    // A leaf alone hears only its own surfaces: fewer than with the file's PVS, but some.
+    size_t heard = 0, heard_by_file = 0;
+    for (const quake::AmbientLevels& l : levels)
+        heard += l != quake::AmbientLevels{0, 0, 0, 0};
+    for (const quake::AmbientLevels& l : quake::read_ambient_levels(original, path))
+        heard_by_file += l != quake::AmbientLevels{0, 0, 0, 0};
+    EXPECT_GT(heard, 0u);
+    EXPECT_LT(heard, heard_by_file);
+    // Blank the ambient bytes of both; then only VISIBILITY and visofs may differ.
+    std::vector<uint8_t> a = original, b = written;
+    for (std::vector<uint8_t>* file : {&a, &b})
+        for (uint32_t leaf = 1; leaf <= n; ++leaf)
+            std::memset(file->data() + lump(*file, kLeafs).offset + 28 * leaf + 24, 0, 4);
+    expect_other_bytes_unchanged(a, b);
+    EXPECT_THROW(quake::write_bsp29_vis(original, alone, "out.bsp", nullptr,
+                                        std::span<const quake::AmbientLevels>(levels).first(3)),
+                 std::invalid_argument);
+}
+
 // Seeded random rows: some missing, some repeated, the rest of varied density.
 Pvs random_pvs(uint32_t regions, uint32_t seed)
 {
@@ -180,7 +215,7 @@ TEST(VisWriter, HostileFilesGiveAnErrorNamingTheOffset)
 
     std::vector<uint8_t> bad = original;
     bad[0] = 30;
-    EXPECT_NE(error_of(bad, pvs).find("version is 30"), std::string::npos);
+    EXPECT_NE(error_of(bad, pvs).find("Half-Life BSP 30"), std::string::npos) << error_of(bad, pvs);
 
     bad = original;
     const int32_t negative = -8;
@@ -200,7 +235,7 @@ TEST(VisWriter, HostileFilesGiveAnErrorNamingTheOffset)
     bad = original;
     const int32_t odd_length = lump(original, kLeafs).length - 1;
     std::memcpy(bad.data() + 8 + 8 * kLeafs, &odd_length, 4);
-    EXPECT_NE(error_of(bad, pvs).find("multiple of its record size"), std::string::npos) << error_of(bad, pvs);
+    EXPECT_NE(error_of(bad, pvs).find("is not a multiple of its BSP 29 record size 28"), std::string::npos) << error_of(bad, pvs);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "visibility/codec/quake_rle.h"
 #include "wld/common/byte_reader.h"
+#include "wld/quake/bsp_lumps.h"
 
 #include <algorithm>
 #include <array>
@@ -15,54 +16,18 @@ namespace pvs::quake {
 
 namespace {
 
-// The lump table of BSP 29 (same numbering as bsp29_reader.cpp).
-constexpr int kLumpCount = 15;
-constexpr int kVisibilityLump = 4;
-constexpr int kLeafsLump = 10;
-constexpr int kModelsLump = 14;
-constexpr uint64_t kHeaderBytes = 4 + 8 * kLumpCount;
-constexpr uint64_t kLeafBytes = 28;
+constexpr uint64_t kHeaderBytes = 4 + 8 * kBspLumpCount;
 constexpr uint64_t kLeafVisofs = 4;
-constexpr uint64_t kModelBytes = 64;
-constexpr uint64_t kModelVisleafs = 52;
 
-struct LumpRange {
-    uint64_t offset = 0;
-    uint64_t length = 0;
-};
-
-std::array<LumpRange, kLumpCount> read_directory(const ByteReader& in)
+uint32_t read_visleafs(const ByteReader& in, const BspLumps& bsp)
 {
-    const auto version = in.read<int32_t>(0, "header version");
-    if (version != 29)
-        in.fail(0, "not a Quake BSP 29 file: version is " + std::to_string(version));
-    in.require(0, kHeaderBytes, "header");
-    std::array<LumpRange, kLumpCount> lumps;
-    for (int i = 0; i < kLumpCount; ++i) {
-        const uint64_t at = 4 + 8 * uint64_t(i);
-        const auto offset = in.read<int32_t>(at, "lump offset");
-        const auto length = in.read<int32_t>(at + 4, "lump length");
-        if (offset < 0 || length < 0)
-            in.fail(at, "lump " + std::to_string(i) + " has a negative offset or length");
-        in.require(uint64_t(offset), uint64_t(length), ("lump " + std::to_string(i)).c_str());
-        lumps[size_t(i)] = {uint64_t(offset), uint64_t(length)};
-    }
-    return lumps;
-}
-
-uint32_t read_visleafs(const ByteReader& in, const std::array<LumpRange, kLumpCount>& lumps)
-{
-    const LumpRange& models = lumps[kModelsLump];
-    if (models.length < kModelBytes)
-        in.fail(models.offset, "the models lump is empty (no world model)");
-    const auto visleafs = in.read<int32_t>(models.offset + kModelVisleafs, "model visleafs");
-    const uint64_t leaf_count = lumps[kLeafsLump].length / kLeafBytes;
-    if (lumps[kLeafsLump].length % kLeafBytes != 0)
-        in.fail(4 + 8 * kLeafsLump + 4, "leafs lump length " + std::to_string(lumps[kLeafsLump].length) +
-                                            " is not a multiple of its record size 28");
-    if (visleafs < 0 || uint64_t(visleafs) >= std::max<uint64_t>(leaf_count, 1))
-        in.fail(models.offset + kModelVisleafs, "world visleafs " + std::to_string(visleafs) +
-                                                    " must be below the leaf count " + std::to_string(leaf_count));
+    if (bsp.lumps[kLumpModels].count == 0)
+        in.fail(bsp.lumps[kLumpModels].offset, "the models lump is empty (no world model)");
+    const uint64_t at = bsp.record(kLumpModels, 0) + 52;
+    const auto visleafs = in.read<int32_t>(at, "model visleafs");
+    if (visleafs < 0 || uint64_t(visleafs) >= std::max<uint64_t>(bsp.lumps[kLumpLeafs].count, 1))
+        in.fail(at, "world visleafs " + std::to_string(visleafs) + " must be below the leaf count " +
+                        std::to_string(bsp.lumps[kLumpLeafs].count));
     return uint32_t(visleafs);
 }
 
@@ -110,45 +75,52 @@ void put_i32(std::vector<uint8_t>& out, uint64_t at, int32_t value) { std::memcp
 } // namespace
 
 std::vector<uint8_t> write_bsp29_vis(std::span<const uint8_t> original, const Pvs& pvs,
-                                     const std::string& file_for_errors, Bsp29VisStats* stats)
+                                     const std::string& file_for_errors, Bsp29VisStats* stats,
+                                     std::span<const AmbientLevels> ambient)
 {
     const ByteReader in(original, file_for_errors);
-    const std::array<LumpRange, kLumpCount> lumps = read_directory(in);
-    const uint32_t visleafs = read_visleafs(in, lumps);
+    const BspLumps bsp = read_bsp_lumps(in);
+    const uint32_t visleafs = read_visleafs(in, bsp);
     if (pvs.region_count() != visleafs)
         throw std::invalid_argument("the PVS has " + std::to_string(pvs.region_count()) + " regions but " +
                                     file_for_errors + " has " + std::to_string(visleafs) + " vis leaves");
+    if (!ambient.empty() && ambient.size() != visleafs)
+        throw std::invalid_argument("ambient levels for " + std::to_string(ambient.size()) + " leaves, " +
+                                    std::to_string(visleafs) + " vis leaves in " + file_for_errors);
     const VisData vis = encode_rows(pvs);
 
     // Lumps in their order in the original file (ties by index), packed on 4-byte boundaries.
-    std::array<int, kLumpCount> order;
-    for (int i = 0; i < kLumpCount; ++i)
+    std::array<int, kBspLumpCount> order;
+    for (int i = 0; i < kBspLumpCount; ++i)
         order[size_t(i)] = i;
     std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return lumps[size_t(a)].offset < lumps[size_t(b)].offset; });
+                     [&](int a, int b) { return bsp.lumps[a].offset < bsp.lumps[b].offset; });
     std::vector<uint8_t> out(kHeaderBytes, 0);
-    std::memcpy(out.data(), original.data(), 4); // version 29
+    std::memcpy(out.data(), original.data(), 4); // the version or variant tag
     uint64_t leafs_at = 0;
     for (const int lump : order) {
         out.resize((out.size() + 3) & ~size_t{3}, 0);
         const uint64_t at = out.size();
         const std::span<const uint8_t> body =
-            lump == kVisibilityLump ? std::span<const uint8_t>(vis.bytes)
-                                    : original.subspan(lumps[size_t(lump)].offset, lumps[size_t(lump)].length);
+            lump == kLumpVisibility ? std::span<const uint8_t>(vis.bytes)
+                                    : original.subspan(bsp.lumps[lump].offset, bsp.lumps[lump].length);
         if (at + body.size() > uint64_t(std::numeric_limits<int32_t>::max()))
             throw std::invalid_argument("the new file would exceed 2 GiB");
         out.insert(out.end(), body.begin(), body.end());
         put_i32(out, 4 + 8 * uint64_t(lump), int32_t(at));
         put_i32(out, 8 + 8 * uint64_t(lump), int32_t(body.size()));
-        if (lump == kLeafsLump)
+        if (lump == kLumpLeafs)
             leafs_at = at;
     }
     out.resize((out.size() + 3) & ~size_t{3}, 0);
 
-    const uint64_t leaf_count = lumps[kLeafsLump].length / kLeafBytes;
-    for (uint64_t leaf = 0; leaf < leaf_count; ++leaf) {
+    const uint64_t leaf_bytes = bsp.layout.leaf_size;
+    for (uint64_t leaf = 0; leaf < bsp.lumps[kLumpLeafs].count; ++leaf) {
         const bool region_leaf = leaf >= 1 && leaf <= visleafs;
-        put_i32(out, leafs_at + leaf * kLeafBytes + kLeafVisofs, region_leaf ? vis.row_offset[leaf - 1] : -1);
+        const uint64_t record = leafs_at + leaf * leaf_bytes;
+        put_i32(out, record + kLeafVisofs, region_leaf ? vis.row_offset[leaf - 1] : -1);
+        if (region_leaf && !ambient.empty())
+            std::memcpy(out.data() + record + bsp.layout.leaf_ambient, ambient[leaf - 1].data(), 4);
     }
     if (stats) {
         stats->rows = uint32_t(std::count_if(vis.row_offset.begin(), vis.row_offset.end(), [](int32_t o) { return o >= 0; }));

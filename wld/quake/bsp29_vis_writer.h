@@ -1,5 +1,6 @@
-// A new PVS into a Quake BSP 29 file: what a vis tool does to the map qbsp wrote
-// (../shared/formats/quake-doom-hepvs.md §1.10, §3.6).
+// A new PVS into a Quake BSP file (29, BSP2 or 2PSB: bsp_layout.h): what a vis tool does to the
+// map qbsp wrote (../shared/formats/quake-doom-hepvs.md §1.10, §3.6), and, when given, the leaves'
+// ambient sound levels it writes too (ambient_sounds.h).
 //
 // Input: the original file's bytes and a Pvs over its regions, numbered as bsp29_reader.h maps
 // them (region r = BSP leaf r+1 = PVS bit r, for leaves 1..models[0].visleafs), so the Pvs must
@@ -13,7 +14,10 @@
 //    row is missing (Pvs::row_missing: the engine shows everything there, as the reader reads
 //    -1); leaf 0 (the shared solid leaf) and the leaves after visleafs (brush entities', never
 //    looked up for vis) get -1;
+//  - with `ambient` (one entry per vis leaf), leaf r+1's four ambient bytes are ambient[r];
+//    without, they keep the file's;
 //  - every other byte of every other lump is unchanged, including the rest of each leaf record.
+//    The version field or variant tag is kept.
 //    Lumps keep their order in the file, each starts on a 4-byte boundary right after the
 //    previous one (padding is zero), and the header's lump directory is rewritten. Bytes of the
 //    original that no lump covers (padding, garbage) are not kept.
@@ -24,6 +28,7 @@
 #pragma once
 
 #include "visibility/pvs.h"
+#include "wld/quake/ambient_sounds.h"
 
 #include <cstdint>
 #include <span>
@@ -39,6 +44,7 @@ struct Bsp29VisStats {
 };
 
 std::vector<uint8_t> write_bsp29_vis(std::span<const uint8_t> original, const Pvs& pvs,
-                                     const std::string& file_for_errors, Bsp29VisStats* stats = nullptr);
+                                     const std::string& file_for_errors, Bsp29VisStats* stats = nullptr,
+                                     std::span<const AmbientLevels> ambient = {});
 
 } // namespace pvs::quake
