@@ -35,6 +35,11 @@ if [ -d "$shared" ]; then
     "$seeds" bsp "$out" "$shared/visdemo/example.bsp" "$shared/visdemo/example.prt"
     "$seeds" bsp "$out" "$shared/quake/end.bsp"
     copy bsp29 "$shared/quake/e1m1.bsp"
+    # BSP2 and 2PSB (the same level as lqdm2.bsp, as ericw's qbsp -bsp2 / -2psb wrote it), vised
+    # by ericw: PVS, ambient levels and every wide record.
+    for f in lqdm2-bsp2.ericw-vis.bsp lqdm2-2psb.ericw-vis.bsp lqdm2.ericw-vis.bsp; do
+        [ -f "$shared/modern-quake/q1/$f" ] && copy bsp29 "$shared/modern-quake/q1/$f"
+    done
     copy obj "$shared/hateengine/E1M1.obj"
     copy hepvs "$shared/hateengine/E1M1.hepvs"
 else

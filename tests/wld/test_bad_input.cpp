@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+
 #include <cstring>
 #include <random>
 
@@ -84,8 +86,15 @@ TEST_P(BadQuakeFile, With200RandomByteChangesLoadsOrThrowsFileError)
 
 INSTANTIATE_TEST_SUITE_P(SharedData, BadQuakeFile,
                          ::testing::Values("quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/dm2.bsp",
-                                           "quake/start.bsp", "quake/end.bsp", "visdemo/example.bsp"),
-                         [](const ::testing::TestParamInfo<const char*>& param) { return test::param_name(param.param); });
+                                           "quake/start.bsp", "quake/end.bsp", "visdemo/example.bsp",
+                                           "modern-quake/q1/lqdm2-bsp2.ericw-vis.bsp",
+                                           "modern-quake/q1/lqdm2-2psb.ericw-vis.bsp"),
+                         [](const ::testing::TestParamInfo<const char*>& param) {
+                             std::string name = test::param_name(param.param);
+                             for (char& c : name)
+                                 c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                             return name;
+                         });
 
 // Hand-made corruptions of example.bsp, each checked for the message a user reads.
 class CorruptExample : public ::testing::Test {
@@ -124,8 +133,9 @@ TEST_F(CorruptExample, WrongVersionSaysWhatItFound)
 {
     put<int32_t>(0, 30);
     EXPECT_NE(error().find("Half-Life"), std::string::npos) << error();
-    std::memcpy(bytes_.data(), "BSP2", 4);
-    EXPECT_NE(error().find("BSP2"), std::string::npos) << error();
+    std::memcpy(bytes_.data(), "IBSP", 4);
+    put<int32_t>(4, 38);
+    EXPECT_NE(error().find("Quake 2 IBSP version 38"), std::string::npos) << error();
 }
 
 TEST_F(CorruptExample, LumpPastTheEndNamesTheLump)

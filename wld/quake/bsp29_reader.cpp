@@ -3,6 +3,7 @@
 #include "visibility/bit_row.h"
 #include "visibility/codec/quake_rle.h"
 #include "wld/common/byte_reader.h"
+#include "wld/quake/bsp_lumps.h"
 #include "wld/quake/entities.h"
 #include "wld/quake/quake_palette.h"
 
@@ -17,34 +18,31 @@ namespace pvs::quake {
 
 namespace {
 
-enum Lump : int {
-    kEntities = 0, kPlanes, kTextures, kVertexes, kVisibility, kNodes, kTexinfo, kFaces, kLighting,
-    kClipnodes, kLeafs, kMarksurfaces, kEdges, kSurfedges, kModels, kLumpCount
-};
-constexpr const char* kLumpNames[kLumpCount] = {"entities", "planes", "textures", "vertexes", "visibility",
-                                                "nodes", "texinfo", "faces", "lighting", "clipnodes",
-                                                "leafs", "marksurfaces", "edges", "surfedges", "models"};
-constexpr uint32_t kRecordSize[kLumpCount] = {1, 20, 1, 12, 1, 24, 40, 20, 1, 8, 28, 2, 4, 4, 64};
+// Lump names as the rest of this file spells them.
+constexpr BspLump kEntities = kLumpEntities, kPlanes = kLumpPlanes, kTextures = kLumpTextures,
+                  kVertexes = kLumpVertexes, kVisibility = kLumpVisibility, kNodes = kLumpNodes,
+                  kTexinfo = kLumpTexinfo, kFaces = kLumpFaces, kLeafs = kLumpLeafs,
+                  kMarksurfaces = kLumpMarksurfaces, kEdges = kLumpEdges, kSurfedges = kLumpSurfedges,
+                  kModels = kLumpModels;
 
 enum Contents : int32_t { kEmpty = -1, kSolid = -2, kWater = -3, kSlime = -4, kLava = -5, kSky = -6 };
 constexpr uint32_t kMaxFaceEdges = 1024; // qbsp's limit is far lower; this only bounds bad files
 
-struct LumpSpan {
-    uint64_t offset = 0;
-    uint64_t length = 0;
-    uint32_t count = 0; // records
-};
-
-// Everything the loading steps share: the reader and the parsed lump table.
+// Everything the loading steps share: the reader and the parsed lump table of the file's variant.
 struct Bsp {
     ByteReader in;
-    LumpSpan lumps[kLumpCount];
-    uint64_t record(Lump lump, uint32_t index) const { return lumps[lump].offset + uint64_t{index} * kRecordSize[lump]; }
-    void check_index(Lump lump, int64_t index, uint64_t at, const char* what) const
+    BspLumps table;
+    const BspLumpSpan* lumps = table.lumps;
+    const BspLayout& layout() const { return table.layout; }
+    uint64_t record(BspLump lump, uint32_t index) const { return table.record(lump, index); }
+    void check_index(BspLump lump, int64_t index, uint64_t at, const char* what) const
     {
-        if (index < 0 || index >= lumps[lump].count)
-            in.fail(at, std::string(what) + " " + std::to_string(index) + " is out of range (the " + kLumpNames[lump] +
-                            " lump has " + std::to_string(lumps[lump].count) + ")");
+        table.check_index(in, lump, index, at, what);
+    }
+    // A count or index field that is 16-bit in BSP 29 and 32-bit in the wide variants.
+    uint32_t read_u(uint64_t at, const char* what) const
+    {
+        return layout().wide ? in.read<uint32_t>(at, what) : in.read<uint16_t>(at, what);
     }
 };
 
@@ -54,33 +52,6 @@ struct Model {
     int32_t visleafs;
     int32_t firstface, numfaces;
 };
-
-void read_header(Bsp& bsp)
-{
-    const auto version = bsp.in.read<int32_t>(0, "header version");
-    if (version != 29) {
-        std::string seen = std::to_string(version);
-        if (version == 30)
-            seen = "30 (Half-Life BSP, not supported)";
-        else if (std::memcmp(bsp.in.bytes(0, 4, "header").data(), "BSP2", 4) == 0 ||
-                 std::memcmp(bsp.in.bytes(0, 4, "header").data(), "2PSB", 4) == 0)
-            seen = "a BSP2/2PSB tag (not supported yet)";
-        bsp.in.fail(0, "not a Quake BSP 29 file: version is " + seen);
-    }
-    bsp.in.require(0, 4 + 8 * kLumpCount, "header");
-    for (int i = 0; i < kLumpCount; ++i) {
-        const uint64_t at = 4 + 8 * uint64_t(i);
-        const auto ofs = bsp.in.read<int32_t>(at, "lump offset");
-        const auto len = bsp.in.read<int32_t>(at + 4, "lump length");
-        if (ofs < 0 || len < 0)
-            bsp.in.fail(at, std::string(kLumpNames[i]) + " lump has a negative offset or length");
-        bsp.in.require(uint64_t(ofs), uint64_t(len), (std::string(kLumpNames[i]) + " lump").c_str());
-        if (len % kRecordSize[i] != 0)
-            bsp.in.fail(at + 4, std::string(kLumpNames[i]) + " lump length " + std::to_string(len) +
-                                    " is not a multiple of its record size " + std::to_string(kRecordSize[i]));
-        bsp.lumps[i] = {uint64_t(ofs), uint64_t(len), uint32_t(len / kRecordSize[i])};
-    }
-}
 
 glm::vec3 read_vec3(const Bsp& bsp, uint64_t at, const char* what)
 {
@@ -120,6 +91,17 @@ int32_t decode_child(const Bsp& bsp, uint16_t raw, uint64_t at)
     return ~leaf;
 }
 
+// BSP2 and 2PSB children: i32, a node when >= 0, else leaf -(c + 1) = ~c.
+int32_t decode_wide_child(const Bsp& bsp, int32_t raw, uint64_t at)
+{
+    if (raw >= 0) {
+        bsp.check_index(kNodes, raw, at, "node child");
+        return raw;
+    }
+    bsp.check_index(kLeafs, int64_t{~raw}, at, "node child leaf");
+    return raw;
+}
+
 void read_tree(const Bsp& bsp, const Model& world, Zone& zone)
 {
     BspTree& tree = zone.tree;
@@ -135,8 +117,13 @@ void read_tree(const Bsp& bsp, const Model& world, Zone& zone)
         node.dist = bsp.in.read<float>(plane_at + 12, "plane dist");
         if (!std::isfinite(node.dist))
             bsp.in.fail(plane_at + 12, "plane dist is not a finite number");
-        node.children[0] = decode_child(bsp, bsp.in.read<uint16_t>(at + 4, "node child"), at + 4);
-        node.children[1] = decode_child(bsp, bsp.in.read<uint16_t>(at + 6, "node child"), at + 6);
+        if (bsp.layout().wide) {
+            node.children[0] = decode_wide_child(bsp, bsp.in.read<int32_t>(at + 4, "node child"), at + 4);
+            node.children[1] = decode_wide_child(bsp, bsp.in.read<int32_t>(at + 8, "node child"), at + 8);
+        } else {
+            node.children[0] = decode_child(bsp, bsp.in.read<uint16_t>(at + 4, "node child"), at + 4);
+            node.children[1] = decode_child(bsp, bsp.in.read<uint16_t>(at + 6, "node child"), at + 6);
+        }
     }
     if (bsp.lumps[kNodes].count == 0)
         tree.root = ~0; // a tree with no node: everything is the solid leaf 0
@@ -195,8 +182,13 @@ void read_regions(const Bsp& bsp, uint32_t visleafs, Zone& zone)
         const uint64_t at = bsp.record(kLeafs, leaf);
         Region& region = zone.regions[r];
         region.flags = contents_flags(bsp.in.read<int32_t>(at, "leaf contents"));
-        region.bounds.grow(read_short3(bsp, at + 8, "leaf mins"));
-        region.bounds.grow(read_short3(bsp, at + 14, "leaf maxs"));
+        if (bsp.layout().float_bounds) {
+            region.bounds.grow(read_vec3(bsp, at + 8, "leaf mins"));
+            region.bounds.grow(read_vec3(bsp, at + 20, "leaf maxs"));
+        } else {
+            region.bounds.grow(read_short3(bsp, at + 8, "leaf mins"));
+            region.bounds.grow(read_short3(bsp, at + 14, "leaf maxs"));
+        }
         zone.tree.leaf_region[leaf] = static_cast<int32_t>(r);
     }
     count_contents(bsp, zone);
@@ -215,18 +207,23 @@ void read_faces(const Bsp& bsp, const Model& world, Zone& zone)
     std::vector<glm::vec3> polygon;
     for (uint32_t f = 0; f < uint32_t(world.numfaces); ++f) {
         const uint64_t at = bsp.record(kFaces, uint32_t(world.firstface) + f);
-        const auto planenum = bsp.in.read<uint16_t>(at, "face planenum");
-        const auto side = bsp.in.read<int16_t>(at + 2, "face side");
-        const auto firstedge = bsp.in.read<int32_t>(at + 4, "face firstedge");
-        const auto numedges = bsp.in.read<uint16_t>(at + 8, "face numedges");
-        const auto texinfo = bsp.in.read<uint16_t>(at + 10, "face texinfo");
+        const BspLayout& l = bsp.layout();
+        const int64_t planenum = l.wide ? int64_t{bsp.in.read<int32_t>(at, "face planenum")}
+                                        : int64_t{bsp.in.read<uint16_t>(at, "face planenum")};
+        const int64_t side = l.wide ? int64_t{bsp.in.read<int32_t>(at + l.face_side, "face side")}
+                                    : int64_t{bsp.in.read<int16_t>(at + l.face_side, "face side")};
+        const auto firstedge = bsp.in.read<int32_t>(at + l.face_first_edge, "face firstedge");
+        const int64_t numedges = l.wide ? int64_t{bsp.in.read<int32_t>(at + l.face_edge_count, "face numedges")}
+                                        : int64_t{bsp.in.read<uint16_t>(at + l.face_edge_count, "face numedges")};
+        const int64_t texinfo = l.wide ? int64_t{bsp.in.read<int32_t>(at + l.face_texinfo, "face texinfo")}
+                                       : int64_t{bsp.in.read<uint16_t>(at + l.face_texinfo, "face texinfo")};
         bsp.check_index(kPlanes, planenum, at, "face plane");
-        bsp.check_index(kTexinfo, texinfo, at + 10, "face texinfo");
+        bsp.check_index(kTexinfo, texinfo, at + l.face_texinfo, "face texinfo");
         if (numedges < 3 || numedges > kMaxFaceEdges)
-            bsp.in.fail(at + 8, "face has " + std::to_string(numedges) + " edges (3.." +
-                                    std::to_string(kMaxFaceEdges) + " expected)");
+            bsp.in.fail(at + l.face_edge_count, "face has " + std::to_string(numedges) + " edges (3.." +
+                                                    std::to_string(kMaxFaceEdges) + " expected)");
         if (firstedge < 0 || int64_t{firstedge} + numedges > int64_t{bsp.lumps[kSurfedges].count})
-            bsp.in.fail(at + 4, "face edge range is outside the surfedges lump");
+            bsp.in.fail(at + l.face_first_edge, "face edge range is outside the surfedges lump");
 
         polygon.clear();
         for (uint32_t k = 0; k < numedges; ++k) {
@@ -236,13 +233,14 @@ void read_faces(const Bsp& bsp, const Model& world, Zone& zone)
                 bsp.in.fail(se_at, "surfedge value is out of range");
             const int32_t edge = e >= 0 ? e : -e;
             bsp.check_index(kEdges, edge, se_at, "surfedge edge");
-            const auto v = bsp.in.read<uint16_t>(bsp.record(kEdges, uint32_t(edge)) + (e >= 0 ? 0 : 2), "edge vertex");
+            const uint64_t edge_at = bsp.record(kEdges, uint32_t(edge));
+            const uint32_t v = bsp.read_u(edge_at + (e >= 0 ? 0 : bsp.layout().edge_size / 2), "edge vertex");
             bsp.check_index(kVertexes, v, bsp.record(kEdges, uint32_t(edge)), "edge vertex");
             polygon.push_back(read_vec3(bsp, bsp.record(kVertexes, v), "vertex"));
         }
 
         // Texture axes -> uv in repeats of the texture.
-        const uint64_t ti = bsp.record(kTexinfo, texinfo);
+        const uint64_t ti = bsp.record(kTexinfo, uint32_t(texinfo));
         float axes[8];
         for (int k = 0; k < 8; ++k) {
             axes[k] = bsp.in.read<float>(ti + 4 * uint64_t(k), "texinfo vector");
@@ -258,7 +256,7 @@ void read_faces(const Bsp& bsp, const Model& world, Zone& zone)
         const float inv_h = 1.0f / float(material.height ? material.height : 64);
 
         // Winding: make the fan counter-clockwise seen from the face's front (plane normal, negated when side != 0).
-        glm::vec3 face_normal = read_vec3(bsp, bsp.record(kPlanes, planenum), "plane normal");
+        glm::vec3 face_normal = read_vec3(bsp, bsp.record(kPlanes, uint32_t(planenum)), "plane normal");
         if (side != 0)
             face_normal = -face_normal;
         glm::vec3 newell{0.0f};
@@ -275,7 +273,7 @@ void read_faces(const Bsp& bsp, const Model& world, Zone& zone)
         }
         Face& face = mesh.faces[f];
         face.first_triangle = static_cast<uint32_t>(mesh.indices.size() / 3);
-        face.triangle_count = numedges - 2u;
+        face.triangle_count = uint32_t(numedges - 2);
         face.material = uint32_t(miptex);
         for (uint32_t k = 1; k + 1 < numedges; ++k) {
             const uint32_t b = reverse ? k + 1 : k, c = reverse ? k : k + 1;
@@ -286,7 +284,7 @@ void read_faces(const Bsp& bsp, const Model& world, Zone& zone)
 
 void read_textures(const Bsp& bsp, Zone& zone)
 {
-    const LumpSpan& lump = bsp.lumps[kTextures];
+    const BspLumpSpan& lump = bsp.lumps[kTextures];
     if (lump.length == 0)
         return; // no textures: every texinfo reference will be out of range and reported there
     if (lump.length < 4) // the count check below subtracts 4 from the length
@@ -343,13 +341,14 @@ void read_marksurfaces(const Bsp& bsp, const Model& world, Zone& zone)
     uint64_t dropped = 0;
     for (uint32_t r = 0; r < visleafs; ++r) {
         const uint64_t at = bsp.record(kLeafs, r + 1);
-        const auto first = bsp.in.read<uint16_t>(at + 20, "leaf firstmarksurface");
-        const auto count = bsp.in.read<uint16_t>(at + 22, "leaf nummarksurfaces");
+        const uint32_t first = bsp.read_u(at + bsp.layout().leaf_first_marksurface, "leaf firstmarksurface");
+        const uint32_t count = bsp.read_u(at + bsp.layout().leaf_marksurface_count, "leaf nummarksurfaces");
         if (uint64_t{first} + count > bsp.lumps[kMarksurfaces].count)
-            bsp.in.fail(at + 20, "leaf " + std::to_string(r + 1) + " marksurface range is outside the lump");
+            bsp.in.fail(at + bsp.layout().leaf_first_marksurface,
+                        "leaf " + std::to_string(r + 1) + " marksurface range is outside the lump");
         for (uint32_t k = 0; k < count; ++k) {
             const uint64_t ms_at = bsp.record(kMarksurfaces, first + k);
-            const auto face = bsp.in.read<uint16_t>(ms_at, "marksurface");
+            const uint32_t face = bsp.read_u(ms_at, "marksurface");
             bsp.check_index(kFaces, face, ms_at, "marksurface face");
             const int64_t world_face = int64_t{face} - world.firstface;
             if (world_face < 0 || world_face >= world.numfaces) {
@@ -366,7 +365,7 @@ void read_marksurfaces(const Bsp& bsp, const Model& world, Zone& zone)
 
 void read_visibility(const Bsp& bsp, uint32_t visleafs, Zone& zone)
 {
-    const LumpSpan& lump = bsp.lumps[kVisibility];
+    const BspLumpSpan& lump = bsp.lumps[kVisibility];
     const std::span<const uint8_t> vis = bsp.in.bytes(lump.offset, lump.length, "visibility lump");
     std::vector<int32_t> visofs(visleafs);
     uint32_t rows = 0;
@@ -438,7 +437,7 @@ glm::vec3 parse_origin(std::string_view text)
 
 void read_entities(const Bsp& bsp, Zone& zone)
 {
-    const LumpSpan& lump = bsp.lumps[kEntities];
+    const BspLumpSpan& lump = bsp.lumps[kEntities];
     const auto entities = parse_entities(bsp.in.bytes(lump.offset, lump.length, "entities lump"), bsp.in.file(),
                                          lump.offset);
     zone.source.counts.emplace_back("entities", entities.size());
@@ -481,15 +480,13 @@ void read_entities(const Bsp& bsp, Zone& zone)
 
 } // namespace
 
-bool looks_like_bsp29(std::span<const uint8_t> bytes)
-{
-    return bytes.size() >= 4 && bytes[0] == 29 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 0;
-}
+bool looks_like_bsp29(std::span<const uint8_t> bytes) { return detect_bsp_variant(bytes).has_value(); }
 
 Zone load_bsp29(std::span<const uint8_t> bytes, const std::string& file)
 {
-    Bsp bsp{ByteReader(bytes, file), {}};
-    read_header(bsp);
+    ByteReader in(bytes, file);
+    const BspLumps table = read_bsp_lumps(in);
+    const Bsp bsp{std::move(in), table};
     if (bsp.lumps[kModels].count == 0)
         bsp.in.fail(bsp.lumps[kModels].offset, "the models lump is empty (no world model)");
     if (bsp.lumps[kLeafs].count == 0)
@@ -504,7 +501,7 @@ Zone load_bsp29(std::span<const uint8_t> bytes, const std::string& file)
     Zone zone;
     zone.source.path = file;
     zone.source.format = "Quake BSP";
-    zone.source.version = "29";
+    zone.source.version = bsp.layout().variant == BspVariant::Bsp29 ? "29" : bsp_variant_name(bsp.layout().variant);
     zone.source.counts.emplace_back("leaves", bsp.lumps[kLeafs].count);
     zone.source.counts.emplace_back("leaves.visleafs", visleafs);
     zone.source.counts.emplace_back("planes", bsp.lumps[kPlanes].count);
