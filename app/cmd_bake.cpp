@@ -335,6 +335,7 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::
     // The other formats through the writer the inspector's Save uses too.
     PvsWriteOptions write_options;
     write_options.quake_ambient = o.ambient;
+    write_options.ambient = o.ambient_classes;
     const PvsWriteback written =
         write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output, write_options);
     for (const std::string& note : written.notes)

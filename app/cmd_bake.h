@@ -29,6 +29,8 @@
 // Exit codes: 0 done, 1 a file could not be read or written, 2 bad arguments, 130 cancelled.
 #pragma once
 
+#include "wld/quake/ambient_sounds.h"
+
 #include <CLI/App.hpp>
 
 #include <atomic>
@@ -76,6 +78,7 @@ struct BakeOptions {
     // Quake maps: ambient sound levels computed from the new rows, as vis writes them (false: the
     // file's levels are kept).
     bool ambient = true;
+    quake::AmbientOptions ambient_classes; // which texture classes count (vis's -noambient* switches)
     // A PVS edit list (wld/pvs_edit_list.h) applied to the bake before it is written: hand fixes
     // that survive a re-vis.
     std::string apply_edits;

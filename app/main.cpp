@@ -12,10 +12,13 @@
 #include "app/inspector_launch.h"
 #include "app/cmd_render.h"
 #include "app/cmd_stats.h"
+#include "app/cmd_vis.h"
 #include "app/cmd_walk.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 int main(int argc, char** argv)
 {
@@ -33,13 +36,21 @@ int main(int argc, char** argv)
     pvs::app::register_compare_command(app, exit_code);
     pvs::app::register_stability_command(app, exit_code);
     pvs::app::register_check_command(app, exit_code);
+    pvs::app::register_vis_command(app, exit_code);
     // The inspector is another executable (inspector_launch.h): checked here, opened there.
     pvs::app::register_inspect_command(app, exit_code,
                                        [argv](const pvs::app::InspectArguments&) { return pvs::app::launch_inspector(argv); });
     std::string zone_path; // `pvscope FILE`: the inspector on FILE
     app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");
 
-    CLI11_PARSE(app, argc, argv);
+    // `pvscope vis` takes vis's one-dash spellings (-threads 2 -noambientsky) as well.
+    std::vector<std::string> arguments = pvs::app::normalize_vis_arguments(std::vector<std::string>(argv + 1, argv + argc));
+    std::reverse(arguments.begin(), arguments.end()); // CLI11 parses a vector from its back
+    try {
+        app.parse(arguments);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
     if (app.get_subcommands().empty())
         exit_code = pvs::app::launch_inspector(argv);
     return exit_code;

@@ -153,6 +153,24 @@ std::vector<AmbientLevels> compute_ambient_levels(std::span<const uint8_t> bytes
     return levels;
 }
 
+std::vector<uint8_t> with_ambient_levels(std::span<const uint8_t> bytes, std::span<const AmbientLevels> levels,
+                                         const std::string& file)
+{
+    const ByteReader in(bytes, file);
+    const BspLumps bsp = read_bsp_lumps(in);
+    const uint32_t visleafs = world_visleafs(in, bsp);
+    if (levels.size() != visleafs)
+        throw std::invalid_argument("ambient levels for " + std::to_string(levels.size()) + " leaves, " +
+                                    std::to_string(visleafs) + " vis leaves in " + file);
+    std::vector<uint8_t> out(bytes.begin(), bytes.end());
+    for (uint32_t r = 0; r < visleafs; ++r) {
+        const uint64_t at = bsp.record(kLumpLeafs, r + 1) + bsp.layout.leaf_ambient;
+        in.require(at, 4, "leaf ambient levels");
+        std::memcpy(out.data() + at, levels[r].data(), 4);
+    }
+    return out;
+}
+
 std::vector<AmbientLevels> read_ambient_levels(std::span<const uint8_t> bytes, const std::string& file)
 {
     const ByteReader in(bytes, file);

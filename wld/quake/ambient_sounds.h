@@ -45,6 +45,12 @@ using AmbientLevels = std::array<uint8_t, 4>; // water, sky, slime, lava: a leaf
 std::vector<AmbientLevels> compute_ambient_levels(std::span<const uint8_t> bytes, const Pvs& pvs,
                                                   const AmbientOptions& options, const std::string& file);
 
+// A copy of the file with leaf r+1's four ambient bytes set to levels[r], every other byte as it
+// was (what `pvscope vis --ambient-only` writes). Throws std::invalid_argument when there is not
+// one entry per vis leaf.
+std::vector<uint8_t> with_ambient_levels(std::span<const uint8_t> bytes, std::span<const AmbientLevels> levels,
+                                         const std::string& file);
+
 // The levels stored in the file's leaves 1..visleafs (what a vis wrote there).
 std::vector<AmbientLevels> read_ambient_levels(std::span<const uint8_t> bytes, const std::string& file);
 

@@ -1,0 +1,193 @@
+#include "app/cmd_vis.h"
+
+#include "app/cmd_bake.h"
+#include "app/sigint_scope.h"
+#include "visibility/file_error.h"
+#include "wld/common/read_file.h"
+#include "wld/quake/ambient_sounds.h"
+#include "wld/zone_file.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+namespace pvs::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// MAP, MAP.bsp: the map's path (vis adds .bsp when the name has no extension).
+std::string map_path(const std::string& name)
+{
+    fs::path p(name);
+    if (p.extension().empty())
+        p += ".bsp";
+    return p.string();
+}
+
+quake::AmbientOptions ambient_classes(const VisCommandOptions& o)
+{
+    quake::AmbientOptions a;
+    a.sky = !(o.noambient || o.noambientsky);
+    a.water = !(o.noambient || o.noambientwater);
+    a.slime = !(o.noambient || o.noambientslime);
+    a.lava = !(o.noambient || o.noambientlava);
+    return a;
+}
+
+// The temporary file beside the map: same folder (so the rename is atomic), .bsp extension.
+std::string temporary_beside(const std::string& map)
+{
+    const fs::path p(map);
+    return (p.parent_path() / (p.stem().string() + ".pvscope-" + std::to_string(::getpid()) + ".tmp.bsp")).string();
+}
+
+// Replaces the map by `written` when it is complete; the temporary file goes either way.
+void replace_map(const std::string& temporary, const std::string& map)
+{
+    std::error_code ec;
+    fs::rename(temporary, map, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        throw FileError(map, 0, "could not replace the map with the vised file: " + ec.message());
+    }
+}
+
+int ambient_only(const VisCommandOptions& o, const std::string& map, std::FILE* err)
+{
+    const std::vector<uint8_t> bytes = read_whole_file(map);
+    const Zone zone = load_zone(map);
+    if (!zone.baked_pvs)
+        throw FileError(map, 0, "--ambient-only: the map has no PVS to compute ambient sounds from (run vis first)");
+    const std::vector<quake::AmbientLevels> levels =
+        quake::compute_ambient_levels(bytes, *zone.baked_pvs, ambient_classes(o), map);
+    const std::string temporary = temporary_beside(map);
+    try {
+        write_whole_file(temporary, quake::with_ambient_levels(bytes, levels, map));
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        throw;
+    }
+    replace_map(temporary, map);
+    size_t with_sound = 0;
+    for (const quake::AmbientLevels& l : levels)
+        with_sound += l != quake::AmbientLevels{0, 0, 0, 0};
+    std::fprintf(err, "%s: ambient sounds on %zu of %zu leaves (the PVS kept)\n", map.c_str(), with_sound, levels.size());
+    return 0;
+}
+
+int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
+{
+    if (o.visdist > 0.0) {
+        std::fprintf(err, "pvscope: error: -visdist is not supported: pvscope bakes what the portals let through; "
+                          "a distance cut belongs to the renderer's far plane\n");
+        return 2;
+    }
+    const std::string map = map_path(o.map);
+    if (!fs::is_regular_file(map)) {
+        std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
+        return 1;
+    }
+    if (o.ambient_only)
+        return ambient_only(o, map, err);
+    BakeOptions b;
+    b.input = map;
+    b.method = o.fast ? "portal-fast" : o.method;
+    b.level = o.level;
+    b.threads = o.threads;
+    b.report = o.report;
+    b.ambient = true;
+    b.ambient_classes = ambient_classes(o);
+    if (o.portals == "file") {
+        const std::string prt = (fs::path(map).replace_extension(".prt")).string();
+        if (!fs::is_regular_file(prt)) {
+            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it; or --portals tree "
+                              "to build portals from the BSP tree)\n", prt.c_str());
+            return 1;
+        }
+        b.prt_in = prt;
+    }
+    const std::string temporary = temporary_beside(map);
+    b.output = temporary;
+    const int code = run_bake(b, err, cancel);
+    if (code != 0) {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        std::fprintf(err, "pvscope: %s left as it was\n", map.c_str());
+        return code;
+    }
+    replace_map(temporary, map);
+    std::fprintf(err, "%s: PVS and ambient sounds written in place\n", map.c_str());
+    return 0;
+}
+
+} // namespace
+
+int run_vis_command(const VisCommandOptions& options, std::FILE* err, const std::atomic<bool>* cancel)
+{
+    try {
+        return checked(options, err, cancel);
+    } catch (const FileError& e) {
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+        return 1;
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+        return 2;
+    }
+}
+
+std::vector<std::string> normalize_vis_arguments(const std::vector<std::string>& arguments)
+{
+    std::vector<std::string> out;
+    bool in_vis = false;
+    for (const std::string& a : arguments) {
+        if (!in_vis) {
+            in_vis = a == "vis";
+            out.push_back(a);
+            continue;
+        }
+        const bool one_dash_long = a.size() > 2 && a[0] == '-' && a[1] != '-' && std::isalpha(static_cast<unsigned char>(a[1]));
+        out.push_back(one_dash_long ? "-" + a : a);
+    }
+    return out;
+}
+
+void register_vis_command(CLI::App& app, int& exit_code)
+{
+    auto o = std::make_shared<VisCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "vis", "Quake's vis as a drop-in: MAP.prt -> PVS and ambient sounds, written into MAP.bsp in place (BSP 29, "
+               "BSP2, 2PSB); ericw's options with one dash or two. Ctrl-C leaves the map as it was");
+    cmd->add_option("map", o->map, "The map (MAP or MAP.bsp); its .prt is read from beside it")->required();
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0u, 1024u))->capture_default_str();
+    cmd->add_flag("--fast", o->fast, "Base vis only (portal-fast): quick and loose, as vis -fast");
+    cmd->add_option("--level", o->level, "Separator test level of the full flow, 0..4")
+        ->check(CLI::Range(0, 4))
+        ->capture_default_str();
+    cmd->add_flag("--noambient", o->noambient, "Write no ambient sound levels (all 0)");
+    cmd->add_flag("--noambientsky", o->noambientsky, "Sky textures make no ambient sound");
+    cmd->add_flag("--noambientwater", o->noambientwater, "Water textures make no ambient sound");
+    cmd->add_flag("--noambientslime", o->noambientslime, "Slime textures make no ambient sound (vis plays slime on the water channel)");
+    cmd->add_flag("--noambientlava", o->noambientlava, "Lava textures make no ambient sound");
+    cmd->add_flag("--nostate", o->nostate, "Accepted for vis's command line; pvscope keeps no state file");
+    cmd->add_option("--visdist", o->visdist, "Not supported (an error)");
+    cmd->add_option("--method", o->method, "portal-full (default) or portal-fast")
+        ->check(CLI::IsMember({"portal-full", "portal-fast"}))
+        ->capture_default_str();
+    cmd->add_option("--portals", o->portals, "file: MAP.prt beside the map; tree: portals built from the BSP tree per leaf")
+        ->check(CLI::IsMember({"file", "tree"}))
+        ->capture_default_str();
+    cmd->add_flag("--ambient-only", o->ambient_only, "Keep the map's PVS; compute only the ambient sound levels from it");
+    cmd->add_option("--report", o->report, "Write a JSON report of the bake (\"-\" = stdout)");
+    cmd->callback([o, &exit_code] {
+        const SigintScope sigint;
+        exit_code = run_vis_command(*o, stderr, &SigintScope::interrupted());
+    });
+}
+
+} // namespace pvs::app

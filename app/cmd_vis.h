@@ -1,0 +1,49 @@
+// `pvscope vis [OPTIONS] MAP[.bsp]`: a drop-in for Quake's vis in a build script (qbsp -> vis ->
+// light). Reads MAP.prt beside the map (PRT1, PRT2 with detail clusters, PRT1-AM), bakes the PVS,
+// computes the leaves' ambient sound levels from it, and writes both into MAP.bsp in place, as
+// vis does: into a temporary file in the map's folder, renamed over the map only when complete,
+// so a crash, Ctrl-C or a full disk never leaves a half-written map. BSP 29, BSP2 and 2PSB.
+//
+// ericw vis's spellings are accepted with one dash or two: -threads N, -fast, -level N,
+// -noambient, -noambientsky, -noambientwater, -noambientslime, -noambientlava, -nostate (no
+// effect: pvscope keeps no state file); -visdist N is refused as not supported. pvscope's own:
+// --method portal-full|portal-fast, --portals file|tree (tree: portals built from the
+// BSP tree per leaf, detail brushes blocking sight, when there is no .prt or to ignore it),
+// --ambient-only (keep the map's PVS, compute only the ambient levels from it), --report R.json.
+// Unknown options are an error and nothing is written.
+// Exit codes: 0 done, 1 a file could not be read or written, 2 bad arguments, 130 cancelled.
+#pragma once
+
+#include <CLI/App.hpp>
+
+#include <atomic>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace pvs::app {
+
+struct VisCommandOptions {
+    std::string map;
+    std::string method = "portal-full";
+    std::string portals = "file"; // file (MAP.prt) | tree
+    int level = 4;
+    unsigned threads = 0;
+    bool fast = false;
+    bool ambient_only = false;
+    bool noambient = false, noambientsky = false, noambientwater = false, noambientslime = false,
+         noambientlava = false;
+    bool nostate = false;
+    double visdist = 0.0; // refused when set
+    std::string report;
+};
+
+int run_vis_command(const VisCommandOptions& options, std::FILE* err, const std::atomic<bool>* cancel = nullptr);
+
+void register_vis_command(CLI::App& app, int& exit_code);
+
+// vis's one-dash long options (-threads, -noambientsky) as two-dash ones, for the arguments after
+// a `vis` subcommand; every other argument as it was.
+std::vector<std::string> normalize_vis_arguments(const std::vector<std::string>& arguments);
+
+} // namespace pvs::app

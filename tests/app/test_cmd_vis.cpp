@@ -1,0 +1,186 @@
+// `pvscope vis` as a build script calls it, on copies of ericw's lqdm2 (../shared/data/modern-quake):
+// in place with the .prt beside the map, ericw's one-dash spellings, --ambient-only restoring
+// ericw's own bytes, the -noambient* switches, an interrupted run and bad options leaving the map
+// untouched, and BSP2 kept BSP2.
+#include "app/cmd_bake.h"
+#include "app/cmd_vis.h"
+
+#include "tests/app/bake_command_fixture.h"
+#include "wld/common/read_file.h"
+#include "wld/quake/ambient_sounds.h"
+#include "wld/zone_file.h"
+
+#include <CLI/CLI.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace pvs::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+class VisCommand : public BakeCommand {
+protected:
+    // Copies shared files into the scratch folder; returns the copy of the first.
+    std::string copy(std::initializer_list<const char*> relatives)
+    {
+        std::string first;
+        for (const char* relative : relatives) {
+            const auto found = find_shared_data(relative);
+            if (!found)
+                return {};
+            const std::string to = path(fs::path(relative).filename().string());
+            fs::copy_file(*found, to, fs::copy_options::overwrite_existing);
+            fs::permissions(to, fs::perms::owner_write, fs::perm_options::add);
+            if (first.empty())
+                first = to;
+        }
+        return first;
+    }
+    // Runs `pvscope ARGS` through the same parser and spellings as the binary.
+    int vis_cli(const std::vector<std::string>& args)
+    {
+        CLI::App app;
+        int code = -1;
+        app::register_vis_command(app, code);
+        std::vector<std::string> a = app::normalize_vis_arguments(args);
+        std::reverse(a.begin(), a.end());
+        try {
+            app.parse(a);
+        } catch (const CLI::ParseError&) {
+            return -2;
+        }
+        return code;
+    }
+    size_t files_in_scratch() const
+    {
+        return size_t(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}));
+    }
+};
+
+TEST(VisArguments, OneDashLongOptionsBecomeTwoAfterVis)
+{
+    EXPECT_EQ(app::normalize_vis_arguments({"vis", "-threads", "2", "-noambientsky", "-v", "--fast", "map"}),
+              (std::vector<std::string>{"vis", "--threads", "2", "--noambientsky", "-v", "--fast", "map"}));
+    EXPECT_EQ(app::normalize_vis_arguments({"bake", "-o", "x.bsp", "-threads"}),
+              (std::vector<std::string>{"bake", "-o", "x.bsp", "-threads"}))
+        << "only vis's arguments";
+}
+
+TEST_F(VisCommand, WritesThePvsAndAmbientInPlaceAsBakeWould)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q1/lqdm2.bsp");
+    const std::string map = copy({"modern-quake/q1/lqdm2.bsp", "modern-quake/q1/lqdm2.prt"});
+    ASSERT_FALSE(map.empty());
+    app::BakeOptions bake;
+    bake.input = map;
+    bake.prt_in = path("lqdm2.prt");
+    bake.output = path("baked.bsp");
+    bake.threads = 2;
+    ASSERT_EQ(run(bake), 0) << err_;
+    const size_t files = files_in_scratch();
+    ASSERT_EQ(vis_cli({"vis", "-threads", "2", "-level", "4", "-nostate", path("lqdm2")}), 0);
+    EXPECT_EQ(read_bytes(map), read_bytes(bake.output)) << "vis in place writes what bake -o writes";
+    EXPECT_EQ(files_in_scratch(), files) << "no temporary file left";
+    size_t with_sound = 0;
+    for (const quake::AmbientLevels& l : quake::read_ambient_levels(read_bytes(map), map))
+        with_sound += l != quake::AmbientLevels{0, 0, 0, 0};
+    EXPECT_EQ(with_sound, 452u) << "the leaves ericw's vis gives a level to (the shared README)";
+}
+
+TEST_F(VisCommand, AmbientOnlyRestoresEricwsBytesAndTheSwitchesClearTheirClass)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q1/lqdm5.ericw-vis.bsp");
+    const std::string map = copy({"modern-quake/q1/lqdm5.ericw-vis.bsp"});
+    ASSERT_FALSE(map.empty());
+    const std::vector<uint8_t> ericw = read_bytes(map);
+    const auto silent = std::vector<quake::AmbientLevels>(quake::read_ambient_levels(ericw, map).size(),
+                                                          quake::AmbientLevels{0, 0, 0, 0});
+    write_whole_file(map, quake::with_ambient_levels(ericw, silent, map));
+    ASSERT_NE(read_bytes(map), ericw);
+    ASSERT_EQ(vis_cli({"vis", "--ambient-only", map}), 0);
+    EXPECT_EQ(read_bytes(map), ericw) << "every byte of ericw's file back";
+
+    const auto count = [&](uint32_t channel) {
+        size_t n = 0;
+        for (const quake::AmbientLevels& l : quake::read_ambient_levels(read_bytes(map), map))
+            n += l[channel] != 0;
+        return n;
+    };
+    const size_t water = count(quake::kAmbientWater), sky = count(quake::kAmbientSky);
+    ASSERT_GT(water, 0u);
+    ASSERT_GT(sky, 0u);
+    ASSERT_EQ(vis_cli({"vis", "-ambient-only", "-noambientsky", map}), 0);
+    EXPECT_EQ(count(quake::kAmbientSky), 0u);
+    EXPECT_EQ(count(quake::kAmbientWater), water);
+    ASSERT_EQ(vis_cli({"vis", "-ambient-only", "-noambientwater", "-noambientslime", map}), 0);
+    EXPECT_EQ(count(quake::kAmbientWater), 0u);
+    EXPECT_EQ(count(quake::kAmbientSky), sky);
+    ASSERT_EQ(vis_cli({"vis", "-ambient-only", "-noambient", map}), 0);
+    EXPECT_EQ(count(quake::kAmbientWater) + count(quake::kAmbientSky), 0u);
+}
+
+TEST_F(VisCommand, AnInterruptedRunOrABadOptionLeavesTheMapAsItWas)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q1/lqdm2.bsp");
+    const std::string map = copy({"modern-quake/q1/lqdm2.bsp", "modern-quake/q1/lqdm2.prt"});
+    ASSERT_FALSE(map.empty());
+    const std::vector<uint8_t> before = read_bytes(map);
+    const size_t files = files_in_scratch();
+    app::VisCommandOptions o;
+    o.map = map;
+    o.threads = 1;
+    const std::atomic<bool> interrupted{true}; // Ctrl-C as the bake starts
+    std::FILE* err = std::tmpfile();
+    EXPECT_EQ(app::run_vis_command(o, err, &interrupted), 130);
+    const std::string said = read_and_close(err);
+    EXPECT_NE(said.find("left as it was"), std::string::npos) << said;
+    EXPECT_EQ(read_bytes(map), before);
+    EXPECT_EQ(files_in_scratch(), files) << "no temporary file left";
+
+    EXPECT_EQ(vis_cli({"vis", "-notanoption", map}), -2);
+    EXPECT_EQ(vis_cli({"vis", "-visdist", "512", map}), 2);
+    fs::remove(path("lqdm2.prt"));
+    EXPECT_EQ(vis_cli({"vis", map}), 1) << "no .prt beside the map";
+    EXPECT_EQ(read_bytes(map), before);
+}
+
+// Without a .prt, --portals tree builds the portals from the BSP tree (the visdemo map: its rows
+// are the hand-derived ones the portal-vis tests check).
+TEST_F(VisCommand, PortalsFromTheTreeWithoutAPrt)
+{
+    SHARED_DATA_OR_SKIP(source, "visdemo/example.bsp");
+    const std::string map = copy({"visdemo/example.bsp"});
+    const Zone before = load_zone(map);
+    const std::vector<uint8_t> original = read_bytes(map);
+    EXPECT_EQ(vis_cli({"vis", map}), 1) << "no .prt beside it";
+    EXPECT_EQ(read_bytes(map), original);
+    ASSERT_EQ(vis_cli({"vis", "--portals", "tree", "-threads", "1", map}), 0);
+    const Zone after = load_zone(map);
+    ASSERT_TRUE(after.baked_pvs.has_value());
+    ASSERT_EQ(after.region_count(), before.region_count());
+    size_t bits = 0;
+    for (uint32_t r = 0; r < after.region_count(); ++r)
+        for (uint32_t c = 0; c < after.region_count(); ++c)
+            bits += after.baked_pvs->visible(r, c);
+    EXPECT_GT(bits, after.region_count()) << "regions see more than themselves";
+    EXPECT_LT(bits, after.region_count() * after.region_count()) << "and not everything";
+}
+
+TEST_F(VisCommand, Bsp2StaysBsp2)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q1/lqdm2-bsp2.bsp");
+    const std::string map = copy({"modern-quake/q1/lqdm2-bsp2.bsp", "modern-quake/q1/lqdm2-bsp2.prt"});
+    ASSERT_FALSE(map.empty());
+    ASSERT_EQ(vis_cli({"vis", "-threads", "2", map}), 0);
+    const std::vector<uint8_t> bytes = read_bytes(map);
+    EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 4), "BSP2");
+    const Zone zone = load_zone(map);
+    ASSERT_TRUE(zone.baked_pvs.has_value());
+    EXPECT_EQ(zone.source.version, "BSP2");
+}
+
+} // namespace
+} // namespace pvs::test
