@@ -211,4 +211,20 @@ TEST(DoomVis, Freedoom2Map10KeepsThePairsGlVisEpsilonLost)
     }
 }
 
+// With --heights the 3-D flow runs on the map's 3-D portals; Quake's vis dropped a winding with no
+// point more than ON_EPSILON in front of a clip plane, which lost these seven directed pairs of
+// E3M7 that the converged reference proves (tests/slow checks the whole reference).
+TEST(DoomVis, Freedoom1E3m7WithHeightsKeepsThePairsOnEpsilonLost)
+{
+    FREEDOOM_OR_SKIP(wad_path, "freedoom1.wad");
+    GL_NODES_OR_SKIP(gwa_path, wad_path, GlBuilder::glbsp_v2);
+    const WadFile wad = read_wad(wad_path), gwa = read_wad(gwa_path);
+    const Zone zone = build_doom_zone(read_doom_map(wad, &gwa, "E3M7"), nullptr);
+    ASSERT_EQ(zone.region_count(), 1835u);
+    const Pvs heights = run(zone, "portal-full", 2, true);
+    for (const auto& [a, b] : {std::pair{657u, 624u}, std::pair{768u, 892u}, std::pair{919u, 750u}, std::pair{925u, 538u},
+                               std::pair{930u, 538u}, std::pair{946u, 538u}, std::pair{961u, 750u}})
+        EXPECT_TRUE(heights.visible(a, b)) << a << " -> " << b;
+}
+
 } // namespace
