@@ -180,6 +180,25 @@ void base_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& stack, uint64_
     return true;
 }
 
+// clip_front against the line through `b` with the unnormalised normal `n` (|n|^2 = length2):
+// distances are n . (p - b), compared as squares against the tolerances times |n|, so a clip that
+// cuts nothing (most separator clips) takes no square root.
+[[gnu::always_inline]] inline bool clip_front_scaled(Segment& s, Vec2 n, Vec2 b, double length2)
+{
+    const double d0 = n.x * (s.p[0].x - b.x) + n.y * (s.p[0].y - b.y);
+    const double d1 = n.x * (s.p[1].x - b.x) + n.y * (s.p[1].y - b.y);
+    const double on2 = kOnLine * kOnLine * length2, slack2 = kSlack * kSlack * length2;
+    if (!(d0 > 0 && d0 * d0 > on2) && !(d1 > 0 && d1 * d1 > on2))
+        return false;
+    const bool back0 = d0 < 0 && d0 * d0 > slack2, back1 = d1 < 0 && d1 * d1 > slack2;
+    if (!back0 && !back1)
+        return true;
+    const double t = (d0 + kSlack * std::sqrt(length2)) / (d0 - d1); // where the distance is -kSlack
+    const Vec2 mid{s.p[0].x + t * (s.p[1].x - s.p[0].x), s.p[0].y + t * (s.p[1].y - s.p[0].y)};
+    s.p[back0 ? 0 : 1] = mid;
+    return true;
+}
+
 // Quake's ClipToSeparators in the plane: for each endpoint of `source`, the first endpoint of
 // `pass` giving a line with the other source endpoint strictly on one side and the other pass
 // endpoint strictly on the other; `target` is clipped to the pass side (the source side when
@@ -210,12 +229,9 @@ bool clip_to_separators(const Segment& source, const Segment& pass, Segment& tar
             const double dp = n.x * (pass.p[1 - j].x - b.x) + n.y * (pass.p[1 - j].y - b.y);
             if (!(dp > 0 && dp * dp > limit2))
                 continue; // the pass not strictly in front: not a separator
-            const double length = std::sqrt(length2);
             if (flip)
                 n = {-n.x, -n.y};
-            Line sep{{n.x / length, n.y / length}, 0};
-            sep.d = dot(sep.n, b);
-            if (!clip_front(target, sep))
+            if (!clip_front_scaled(target, n, b, length2))
                 return false;
             break;
         }
