@@ -82,7 +82,7 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     if (report) {
         report->cells = done.load();
         report->points = points.load();
-        report->threads = threads;
+        report->threads = parallel_items_threads(threads, cells);
         report->cancelled = !finished;
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         uint64_t bits_set = 0;

@@ -72,7 +72,7 @@ Pvs bake_mesh_reference_grid(const Zone& zone, const ViewGrid& grid, const MeshR
         report->open_points = open_points.load();
         report->open_cells = open_cells.load();
         report->rays = rays.load();
-        report->threads = threads;
+        report->threads = parallel_items_threads(threads, cells);
         report->cancelled = !finished;
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         uint64_t set = 0;

@@ -179,7 +179,8 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     WitnessRows rows(regions);
 
     ReferenceReport report;
-    report.threads = params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency());
+    report.threads = parallel_items_threads(params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency()),
+                                            zone.region_count());
     for (uint32_t r = 0; r < regions; ++r)
         report.regions_without_volume += volumes.has_volume(r) ? 0 : 1;
 
