@@ -5,6 +5,7 @@
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
 #include "wld/quake/ambient_sounds.h"
+#include "wld/quake/bsp29_reader.h"
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
@@ -46,7 +47,7 @@ std::string temporary_beside(const std::string& map)
     return (p.parent_path() / (p.stem().string() + ".pvscope-" + std::to_string(::getpid()) + ".tmp.bsp")).string();
 }
 
-// Replaces the map by `written` when it is complete; the temporary file goes either way.
+// Renames the complete temporary file over the map; when that fails the temporary file goes.
 void replace_map(const std::string& temporary, const std::string& map)
 {
     std::error_code ec;
@@ -60,7 +61,7 @@ void replace_map(const std::string& temporary, const std::string& map)
 int ambient_only(const VisCommandOptions& o, const std::string& map, std::FILE* err)
 {
     const std::vector<uint8_t> bytes = read_whole_file(map);
-    const Zone zone = load_zone(map);
+    const Zone zone = quake::load_bsp29(bytes, map); // the bytes read once, for the zone and the levels
     if (!zone.baked_pvs)
         throw FileError(map, 0, "--ambient-only: the map has no PVS to compute ambient sounds from (run vis first)");
     const std::vector<quake::AmbientLevels> levels =

@@ -29,8 +29,9 @@ void write_whole_file(const std::string& path, const std::vector<uint8_t>& bytes
     if (!out)
         throw FileError(path, 0, std::string("cannot create: ") + std::strerror(errno));
     out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.close(); // flushes: a full disk shows here, not silently in the destructor
     if (!out)
-        throw FileError(path, 0, "write failed");
+        throw FileError(path, 0, "write failed (" + std::string(std::strerror(errno)) + ")");
 }
 
 } // namespace pvs
