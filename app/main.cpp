@@ -3,6 +3,7 @@
 // window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
 #include "app/cmd_bake.h"
 #include "app/cmd_check.h"
+#include "app/cmd_why.h"
 #include "app/cmd_compare.h"
 #include "app/cmd_stability.h"
 #include "app/cmd_convert.h"
@@ -36,6 +37,7 @@ int main(int argc, char** argv)
     pvs::app::register_compare_command(app, exit_code);
     pvs::app::register_stability_command(app, exit_code);
     pvs::app::register_check_command(app, exit_code);
+    pvs::app::register_why_command(app, exit_code);
     pvs::app::register_vis_command(app, exit_code);
     // The inspector is another executable (inspector_launch.h): checked here, opened there.
     pvs::app::register_inspect_command(app, exit_code,

@@ -289,6 +289,10 @@ Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights
 
 std::span<const VisMethod> vis_methods() { return kMethods; }
 
+PortalSet method_portals(const Zone& zone, const MethodSettings& settings) { return zone_portals(zone, settings); }
+
+bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings) { return uses_2d_vis(zone, settings.heights); }
+
 const VisMethod* find_vis_method(std::string_view name)
 {
     for (const VisMethod& m : kMethods)

@@ -97,6 +97,12 @@ std::span<const VisMethod> vis_methods();
 // portals. `portal_count`, when given, receives the number of portals used.
 Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights, VisReport* report,
                          size_t* portal_count = nullptr);
+// The portals portal-fast and portal-full bake on (built from the zone's tree; a map extruded
+// from 2-D without `heights`: its column portals), and whether they go to the 2-D baker
+// (bake_portal_vis_2d) rather than bake_portal_vis. Throws as those methods do (no tree).
+PortalSet method_portals(const Zone& zone, const MethodSettings& settings);
+bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings);
+
 // nullptr when no method has that name.
 const VisMethod* find_vis_method(std::string_view name);
 // "file, none, portal-fast, ..." for messages and --help.

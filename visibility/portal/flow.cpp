@@ -31,7 +31,34 @@ bool FlowWorker::enter(uint32_t leaf, uint32_t entry)
     f.separators[0].count = f.separators[1].count = 0;
     on_stack_[leaf] = 1;
     bits::set(vis_, leaf);
+    if (watching_ && leaf == probe_->to)
+        record_chain(leaf, entry);
     return true;
+}
+
+void FlowWorker::record_chain(uint32_t leaf, uint32_t entry)
+{
+    // The frames 1..depth_ hold the chain's regions (the new one's frame is at depth_ too: enter
+    // has pushed it); frame k - 1 holds the window the walk saw region k's portal through.
+    FlowChain chain;
+    chain.directed_portal = head_portal_;
+    for (size_t k = 1; k <= depth_; ++k) {
+        const Frame& f = *frames_[k];
+        const uint32_t into = k == depth_ ? entry : f.entry;
+        ChainStep step;
+        step.region = k == depth_ ? leaf : f.leaf;
+        step.portal = g_.input_portal[into >> 1];
+        const WRef whole = portal_winding(into);
+        const WRef seen = k == 1 ? whole : frames_[k - 1]->pass;
+        step.portal_size = winding_area(whole);
+        step.window_size = winding_area(seen);
+        step.window.assign(seen.points, seen.points + seen.count);
+        if (k >= 3)
+            step.separators = frames_[k - 1]->separators[0].count + frames_[k - 1]->separators[1].count;
+        chain.steps.push_back(std::move(step));
+    }
+    probe_->found[head_portal_] = std::move(chain);
+    watching_ = false;
 }
 
 WRef FlowWorker::clip_to_frame_separators(WRef w, Frame& f, const Frame& prev, const DPlane& head_plane)
@@ -118,6 +145,8 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
     head.source = portal_winding(pi);
     head.pass = {};
     head.portalplane = p.plane;
+    head_portal_ = pi;
+    watching_ = probe_ != nullptr && p.owner == probe_->from;
     // Dense while the walk reads it, written over the words its runs span only.
     const uint32_t runs = head_mightsee.runs();
     head.lo = runs == 0 ? 0 : head_mightsee.start(0);

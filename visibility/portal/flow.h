@@ -11,6 +11,7 @@
 // scratch.
 #pragma once
 
+#include "visibility/portal/flow_chain.h"
 #include "visibility/portal/flow_frame.h"
 #include "visibility/portal/flow_order.h"
 #include "visibility/portal/passages.h"
@@ -47,6 +48,9 @@ public:
     std::span<const uint64_t> vis() const { return vis_; }
     void use_passages(const Passages* p) { passages_ = p; }
     void use_target_checks(bool on) { target_checks_ = on; }
+    // Record, into probe->found[pi], the chain of each portal pi leaving probe->from the first
+    // time its walk enters probe->to (flow_chain.h). found must hold a slot per directed portal.
+    void watch(ChainProbe* probe) { probe_ = probe; }
     size_t target_checks() const { return target_check_count_; }
     size_t target_check_prunes() const { return target_check_prunes_; }
     // The passage row of directed portal ai and the k-th portal leaving its destination
@@ -100,6 +104,9 @@ private:
 
     // Enters `leaf` below the frame at depth_ (false when it is already on the chain).
     bool enter(uint32_t leaf, uint32_t entry);
+    // The chain of the walk into `leaf` (through directed portal `entry`), below the frame at
+    // depth_, into probe_->found[head portal].
+    void record_chain(uint32_t leaf, uint32_t entry);
     // Leaves the frame at depth_.
     void leave()
     {
@@ -138,6 +145,9 @@ private:
     std::vector<uint64_t> ones_;
     std::vector<uint64_t> spread_; // a narrow passage row's words, spread out (spread_passage)
     bool target_checks_ = false;
+    ChainProbe* probe_ = nullptr;
+    bool watching_ = false; // this walk's portal leaves probe_->from and has not entered probe_->to yet
+    uint32_t head_portal_ = 0;
     size_t target_check_count_ = 0;
     size_t target_check_prunes_ = 0;
 };

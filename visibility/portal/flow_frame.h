@@ -73,6 +73,15 @@ struct Frame {
     }
 };
 
+// The area of a (convex, planar) winding; 0 for none.
+inline double winding_area(const WRef& w)
+{
+    Vec twice(0.0);
+    for (uint32_t i = 1; i + 1 < w.count; ++i)
+        twice += glm::cross(w.points[i] - w.points[0], w.points[i + 1] - w.points[0]);
+    return 0.5 * glm::length(twice);
+}
+
 inline void release_slot(const WRef& w, Frame& f)
 {
     if (w.owner == &f)

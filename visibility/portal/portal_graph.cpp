@@ -38,7 +38,8 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
         point_total += in.point_count;
     g.points.reserve(std::min(2 * point_total, 2 * set.points.size()));
     std::vector<Vec> pts;
-    for (const Portal& in : set.portals) {
+    for (uint32_t input = 0; input < uint32_t(set.portals.size()); ++input) {
+        const Portal& in = set.portals[input];
         const bool regions_ok = in.regions[0] >= 0 && in.regions[1] >= 0 &&
                                 uint32_t(in.regions[0]) < region_count && uint32_t(in.regions[1]) < region_count &&
                                 in.regions[0] != in.regions[1];
@@ -85,6 +86,7 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
         set_sphere(g, backward);
         g.portals.push_back(forward);
         g.portals.push_back(backward);
+        g.input_portal.push_back(input);
         g.max_points = std::max(g.max_points, count);
         ++g.used;
     }

@@ -64,6 +64,8 @@ struct Graph {
     // Per entry of leaf_portals, the region that portal leads into: a flood skips most portals
     // by it (their region is reached already) without loading the portal itself.
     std::vector<uint32_t> leaf_portal_dest;
+    // Per pair of directed portals (2i, 2i + 1): the index of the input portal they come from.
+    std::vector<uint32_t> input_portal;
     uint32_t max_points = 0;
     size_t used = 0;
     size_t skipped = 0;
@@ -71,7 +73,8 @@ struct Graph {
     size_t bytes() const
     {
         return portals.capacity() * sizeof(DirectedPortal) + points.capacity() * sizeof(Vec) +
-               (leaf_first.capacity() + leaf_portals.capacity() + leaf_portal_dest.capacity()) * sizeof(uint32_t);
+               (leaf_first.capacity() + leaf_portals.capacity() + leaf_portal_dest.capacity() + input_portal.capacity()) *
+                   sizeof(uint32_t);
     }
 };
 

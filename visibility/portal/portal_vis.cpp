@@ -117,6 +117,7 @@ void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* pa
 {
     FlowWorker worker(b.g, b.level);
     worker.use_target_checks(b.params.target_checks);
+    worker.watch(b.params.probe);
     if (passages != nullptr)
         worker.use_passages(passages);
     const PruneRows prune_rows(order.rank.data(), b.state.get(), b.mightsee.data(), b.visbits.data());
@@ -260,6 +261,8 @@ Pvs bake_portal_vis(const PortalSet& input, uint32_t region_count, const VisPara
     rep.portals_skipped = g.skipped;
     rep.threads = thread_count(params.threads, g.portals.size());
     Bake b(g, params, std::clamp(params.level, 0, 4), rep.threads);
+    if (params.probe != nullptr)
+        params.probe->found.assign(b.n, std::nullopt);
 
     bool base_done = false;
     if (params.progress && !params.progress(0.0))

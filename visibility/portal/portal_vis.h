@@ -129,6 +129,7 @@
 // Figures in docs/performance.md, "Memory of the bake".
 #pragma once
 
+#include "visibility/portal/flow_chain.h"
 #include "visibility/pvs.h"
 #include "visibility/zone.h"
 
@@ -149,6 +150,9 @@ struct VisParams {
     bool target_checks = true;
     // Called on the calling thread with the fraction done in [0, 1]; return false to cancel.
     std::function<bool(double fraction)> progress;
+    // Full: when given, the flow records the chains along which it reached probe->to from
+    // probe->from (flow_chain.h); the result is the same. Its `found` is resized by the bake.
+    ChainProbe* probe = nullptr;
 };
 
 struct VisReport {

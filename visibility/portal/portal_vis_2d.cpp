@@ -63,6 +63,7 @@ struct Graph {
     std::vector<Portal2> portals;        // directed: 2i and 2i + 1
     std::vector<uint32_t> first_of_leaf; // leaf r's outgoing portals: order[first[r] .. first[r + 1])
     std::vector<uint32_t> order;
+    std::vector<uint32_t> input_portal; // per pair 2i, 2i + 1: the input portal's index
     uint32_t leaf_count = 0;
     size_t words = 0;
     size_t skipped = 0;
@@ -109,7 +110,8 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
     Graph g;
     g.leaf_count = region_count;
     g.words = bits::words_for(region_count);
-    for (const Portal& portal : set.portals) {
+    for (uint32_t input = 0; input < uint32_t(set.portals.size()); ++input) {
+        const Portal& portal = set.portals[input];
         Segment seg;
         Line line;
         const int32_t r0 = portal.regions[0], r1 = portal.regions[1];
@@ -121,6 +123,7 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
         // 2i: stored in regions[0], leads into regions[1] (normal negated to point there).
         g.portals.push_back({seg, line.flipped(), uint32_t(r1), uint32_t(r0)});
         g.portals.push_back({seg, line, uint32_t(r0), uint32_t(r1)});
+        g.input_portal.push_back(input);
     }
     g.first_of_leaf.assign(region_count + 1, 0);
     for (const Portal2& p : g.portals)
@@ -270,6 +273,9 @@ public:
         head.source = p.seg;
         head.line = p.line;
         head.has_pass = false;
+        head_portal_ = pi;
+        watching_ = probe_ != nullptr && p.owner == probe_->from;
+        path_entry_.assign(1, pi);
         stopped_ = false;
         steps_ = 0;
         if (first_window_.empty()) {
@@ -286,6 +292,9 @@ public:
         memo_words_.clear();
         return !stopped_;
     }
+
+    // Record chains into probe->found (flow_chain.h), as the 3-D flow does.
+    void watch(ChainProbe* probe) { probe_ = probe; }
 
     size_t leaf_recursions = 0;
     double wait_seconds = 0;
@@ -306,6 +315,10 @@ private:
     uint32_t my_rank_ = 0;
     bool stopped_ = false;
     size_t steps_ = 0;
+    ChainProbe* probe_ = nullptr;
+    bool watching_ = false;
+    uint32_t head_portal_ = 0;
+    std::vector<uint32_t> path_entry_; // per depth: the directed portal the walk entered through
 
     // Windows already walked on from each portal in this walk (see "Dominated windows").
     struct Window {
@@ -350,9 +363,33 @@ private:
         return flood_.data() + size_t(t) * g_.words;
     }
 
+    static double length(const Segment& s) { return std::hypot(s.p[1].x - s.p[0].x, s.p[1].y - s.p[0].y); }
+
+    // The chain of the walk into `leaf` at `depth` (path_entry_[0..depth]), into probe_->found.
+    void record_chain(size_t depth)
+    {
+        FlowChain chain;
+        chain.directed_portal = head_portal_;
+        for (size_t k = 0; k <= depth; ++k) {
+            const uint32_t into = path_entry_[k];
+            const Segment& seen = k == 0 ? g_.portals[into].seg : frames_[k].pass;
+            ChainStep step;
+            step.region = g_.portals[into].leaf;
+            step.portal = g_.input_portal[into >> 1];
+            step.portal_size = length(g_.portals[into].seg);
+            step.window_size = length(seen);
+            step.window = {glm::dvec3(seen.p[0].x, seen.p[0].y, 0.0), glm::dvec3(seen.p[1].x, seen.p[1].y, 0.0)};
+            chain.steps.push_back(std::move(step));
+        }
+        probe_->found[head_portal_] = std::move(chain);
+        watching_ = false;
+    }
+
     void walk(uint32_t leaf, size_t depth)
     {
         bits::set(out_, leaf);
+        if (watching_ && leaf == probe_->to)
+            record_chain(depth);
         if ((++steps_ & 1023) == 0 && stop_.load(std::memory_order_relaxed))
             stopped_ = true;
         if (stopped_)
@@ -406,6 +443,10 @@ private:
             if (dominated_or_remember(ti, cur)) {
                 ++dominated;
                 continue;
+            }
+            if (watching_) {
+                path_entry_.resize(depth + 2);
+                path_entry_[depth + 1] = ti;
             }
             walk(t.leaf, depth + 1);
         }
@@ -506,6 +547,8 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
     const double base_share = full ? 0.05 : 1.0;
     const auto fraction = [&] { return double(finished.load()) / std::max<uint32_t>(n, 1); }; // of the phase
 
+    if (params.probe != nullptr)
+        params.probe->found.assign(n, std::nullopt);
     std::vector<uint64_t> flood(size_t(n) * g.words, 0);
     const auto base_progress = params.progress ? std::function<bool(double)>([&](double f) { return params.progress(f * base_share); })
                                                : std::function<bool(double)>();
@@ -550,6 +593,7 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
             [&] {
                 Scratch s;
                 s.walker = std::make_unique<Walker>(g, std::clamp(params.level, 0, 3), flood, vis, rank, done.get(), stop);
+                s.walker->watch(params.probe);
                 s.row.assign(g.words, 0);
                 return s;
             },

@@ -1,0 +1,218 @@
+// `pvscope why`'s answers (visibility/eval/pair_explanation.h) against what is known without it:
+// the visdemo example's hand-derived pairs (tests/support/visdemo_rows.h), a segment walk through
+// the tree written here from scratch, the portals' own regions, and a bit set by hand.
+#include "visibility/eval/pair_explanation.h"
+
+#include "tests/support/freedoom.h"
+#include "tests/support/test_data.h"
+#include "tests/support/visdemo_rows.h"
+#include "visibility/bit_row.h"
+#include "wld/zone_file.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+#include <vector>
+
+namespace pvs {
+namespace {
+
+// The regions (or kLeafSolid / kLeafOutside) of the leaves the segment p -> q passes through, in
+// order: a plain recursive walk, splitting the segment at each node plane it crosses. Pieces of
+// zero length are not visited (a segment through a cell's edge does not enter it).
+void walk_segment(const BspTree& tree, int32_t child, glm::dvec3 p, glm::dvec3 q, std::vector<int32_t>& out)
+{
+    if (BspTree::is_leaf(child)) {
+        if (p != q)
+            out.push_back(tree.leaf_region[size_t(BspTree::leaf_index(child))]);
+        return;
+    }
+    const BspNode& n = tree.nodes[size_t(child)];
+    const glm::dvec3 normal(n.normal);
+    const double dp = glm::dot(normal, p) - double(n.dist), dq = glm::dot(normal, q) - double(n.dist);
+    if (dp == 0.0 && dq == 0.0) {
+        walk_segment(tree, n.children[tree.tie_rule == TieRule::OnPlaneGoesBack ? 1 : 0], p, q, out);
+    } else if (dp >= 0.0 && dq >= 0.0) {
+        walk_segment(tree, n.children[0], p, q, out);
+    } else if (dp <= 0.0 && dq <= 0.0) {
+        walk_segment(tree, n.children[1], p, q, out);
+    } else {
+        const glm::dvec3 m = p + (q - p) * (dp / (dp - dq));
+        walk_segment(tree, n.children[dp > 0.0 ? 0 : 1], p, m, out);
+        walk_segment(tree, n.children[dp > 0.0 ? 1 : 0], m, q, out);
+    }
+}
+
+// The witness starts in A, ends in B and meets nothing solid on the way (by the walk above).
+void expect_witness_open(const Zone& zone, const PairExplanation& e)
+{
+    ASSERT_TRUE(e.witness);
+    std::vector<int32_t> leaves;
+    walk_segment(zone.tree, zone.tree.root, e.witness->from, e.witness->to, leaves);
+    ASSERT_FALSE(leaves.empty());
+    EXPECT_EQ(leaves.front(), int32_t(e.a)) << "the witness starts outside A";
+    EXPECT_EQ(leaves.back(), int32_t(e.b)) << "the witness ends outside B";
+    for (const int32_t region : leaves)
+        EXPECT_GE(region, 0) << "the witness " << e.a << " -> " << e.b << " passes a solid or outside leaf";
+    ASSERT_TRUE(e.camera);
+    const glm::dvec3 along = glm::normalize(e.witness->to - e.witness->from);
+    EXPECT_NEAR(std::atan2(along.y, along.x) * 180.0 / M_PI, e.camera->yaw_degrees, 1e-9);
+}
+
+// The chain is a walk through portals from A to B: each step's portal joins the region before it
+// and the step's region, and the window the flow saw lies on that portal's plane, no larger.
+void expect_chain_is_a_walk(const PairExplanation& e)
+{
+    ASSERT_TRUE(e.chain);
+    ASSERT_FALSE(e.chain->steps.empty());
+    uint32_t before = e.a;
+    for (const ChainStep& step : e.chain->steps) {
+        ASSERT_LT(step.portal, e.portals.portals.size());
+        const Portal& portal = e.portals.portals[step.portal];
+        const bool joins = (portal.regions[0] == int32_t(before) && portal.regions[1] == int32_t(step.region)) ||
+                           (portal.regions[1] == int32_t(before) && portal.regions[0] == int32_t(step.region));
+        EXPECT_TRUE(joins) << "portal " << step.portal << " does not join " << before << " and " << step.region;
+        EXPECT_LE(step.window_size, step.portal_size * (1 + 1e-9) + 1e-9);
+        EXPECT_GT(step.window_size, 0.0);
+        before = step.region;
+    }
+    EXPECT_EQ(before, e.b);
+}
+
+ExplainOptions quick_options()
+{
+    ExplainOptions options;
+    options.flow.threads = 2;
+    options.witness_budget = 20000;
+    return options;
+}
+
+TEST(PairExplanation, VisdemoWitnessesAreExactlyTheHandDerivedPairs)
+{
+    SHARED_DATA_OR_SKIP(path, "visdemo/example.bsp");
+    const Zone& zone = *test::shared_zone("visdemo/example.bsp");
+    ASSERT_EQ(zone.region_count(), 11u);
+    size_t witnesses = 0, chains = 0;
+    for (uint32_t a = 0; a < 11; ++a) {
+        const std::vector<uint32_t>& sees = test::kExampleExpected[a];
+        for (uint32_t b = 0; b < 11; ++b) {
+            const PairExplanation e = explain_pair(zone, nullptr, a, b, quick_options());
+            const bool expected = std::find(sees.begin(), sees.end(), b) != sees.end();
+            EXPECT_EQ(e.witness.has_value(), expected)
+                << a << " -> " << b << (expected ? ": the layout has a sight line, none found" : ": a witness the layout rules out");
+            if (e.witness) {
+                expect_witness_open(zone, e);
+                ++witnesses;
+            }
+            // The flow is conservative: it holds every pair with a sight line, and has a chain
+            // for exactly the pairs it holds (itself excepted: no walk enters A from A).
+            if (expected) {
+                EXPECT_TRUE(e.flow_holds) << a << " -> " << b;
+            }
+            if (a != b) {
+                EXPECT_EQ(e.chain.has_value(), e.flow_holds) << a << " -> " << b;
+                if (e.chain) {
+                    expect_chain_is_a_walk(e);
+                    ++chains;
+                }
+            }
+            EXPECT_EQ(e.verdict, expected ? PairVerdict::Sees : PairVerdict::Overdraw) << a << " -> " << b;
+        }
+    }
+    EXPECT_GT(chains, 40u);
+    EXPECT_GT(witnesses, 80u);
+}
+
+// A bit a vis tool could not have set (no sight line, no chain of the flow) is called what it is;
+// the same pair without the bit is hidden; a neighbour through one portal sees it with a chain of
+// one step.
+TEST(PairExplanation, BitSetByHandIsUnexplained)
+{
+    SHARED_DATA_OR_SKIP(path, "quake/e1m1.bsp");
+    const Zone& zone = *test::shared_zone("quake/e1m1.bsp");
+    ASSERT_TRUE(zone.baked_pvs);
+    const Pvs& file = *zone.baked_pvs;
+    // A far pair the file lacks: the first region whose row misses the last one.
+    const uint32_t n = uint32_t(zone.region_count());
+    uint32_t a = 0, b = n - 1;
+    while (a < n && file.visible(a, b))
+        ++a;
+    ASSERT_LT(a, n);
+    const Pvs edited = Pvs::build(n, [&](uint32_t r, std::span<uint64_t> row) {
+        file.decode_row(r, row);
+        if (r == a)
+            bits::set(row, b);
+        return true;
+    });
+    ExplainOptions options = quick_options();
+    const PairExplanation forged = explain_pair(zone, &edited, a, b, options);
+    EXPECT_TRUE(forged.in_pvs);
+    EXPECT_FALSE(forged.witness);
+    EXPECT_FALSE(forged.chain);
+    EXPECT_EQ(forged.verdict, PairVerdict::Unexplained) << forged.summary;
+    options.want_chain = false;
+    const PairExplanation plain = explain_pair(zone, &file, a, b, options);
+    EXPECT_EQ(plain.verdict, PairVerdict::Hidden) << plain.summary;
+
+    // A neighbour: the first portal of the set the flow bakes on that joins a to another region.
+    options.want_chain = true;
+    const PortalSet portals = method_portals(zone, options.flow);
+    const Portal* joining = nullptr;
+    for (const Portal& p : portals.portals)
+        if ((p.regions[0] == int32_t(a) || p.regions[1] == int32_t(a)) && p.regions[0] >= 0 && p.regions[1] >= 0) {
+            joining = &p;
+            break;
+        }
+    ASSERT_NE(joining, nullptr);
+    const uint32_t neighbour = uint32_t(joining->regions[0] == int32_t(a) ? joining->regions[1] : joining->regions[0]);
+    const PairExplanation next = explain_pair(zone, &file, a, neighbour, options);
+    EXPECT_EQ(next.verdict, PairVerdict::Sees) << next.summary;
+    expect_witness_open(zone, next);
+    expect_chain_is_a_walk(next);
+    EXPECT_EQ(next.chain->steps.size(), 1u);
+}
+
+// Doom's 2-D flow records chains too (widths of column portals), and its witnesses pass the walk.
+TEST(PairExplanation, DoomTwoDimensionalChain)
+{
+    FREEDOOM_OR_SKIP(wad, "freedoom2.wad");
+    const auto gwa = test::gl_nodes_file(wad, test::GlBuilder::glbsp_v5);
+    if (!gwa)
+        GTEST_SKIP() << "SKIPPED: glbsp is not installed";
+    ZoneLoadOptions load;
+    load.map = "MAP01";
+    load.gwa = *gwa;
+    const Zone zone = load_zone(wad, load);
+    ExplainOptions options = quick_options();
+    size_t chains = 0;
+    for (uint32_t b = 1; b < 40 && chains < 3; ++b) {
+        const PairExplanation e = explain_pair(zone, nullptr, 0, b, options);
+        EXPECT_TRUE(e.chain_2d);
+        if (!e.chain)
+            continue;
+        ++chains;
+        expect_chain_is_a_walk(e);
+        if (e.witness)
+            expect_witness_open(zone, e);
+    }
+    EXPECT_GT(chains, 0u);
+}
+
+TEST(PairExplanation, RegionOutOfRangeNamesTheCount)
+{
+    SHARED_DATA_OR_SKIP(path, "visdemo/example.bsp");
+    const Zone& zone = *test::shared_zone("visdemo/example.bsp");
+    try {
+        explain_pair(zone, nullptr, 0, 11, quick_options());
+        FAIL() << "no error for region 11 of 11";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("region 11 is out of range"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("has 11 regions"), std::string::npos) << e.what();
+    }
+}
+
+} // namespace
+} // namespace pvs

@@ -1,0 +1,176 @@
+// Why A's row holds B, or not (pair_explanation.h).
+#include "visibility/eval/pair_explanation.h"
+
+#include "visibility/portal/portal_vis.h"
+#include "visibility/portal/portal_vis_2d.h"
+#include "visibility/reference/region_sampler.h"
+#include "visibility/reference/tree_trace.h"
+
+#include <cmath>
+#include <cstdio>
+#include <glm/geometric.hpp>
+#include <stdexcept>
+
+namespace pvs {
+namespace {
+
+// The polygons of the portals on region r's boundary.
+std::vector<std::vector<glm::dvec3>> region_portal_polygons(const PortalSet& set, uint32_t r)
+{
+    std::vector<std::vector<glm::dvec3>> polygons;
+    for (const Portal& p : set.portals) {
+        if (p.regions[0] != int32_t(r) && p.regions[1] != int32_t(r))
+            continue;
+        if (p.first_point > set.points.size() || p.point_count > set.points.size() - p.first_point)
+            continue;
+        std::vector<glm::dvec3>& polygon = polygons.emplace_back();
+        for (uint32_t i = 0; i < p.point_count; ++i)
+            polygon.emplace_back(set.points[p.first_point + i]);
+    }
+    return polygons;
+}
+
+// The flow's chain from a to b, if it holds the pair (into e.chain, e.portals).
+void find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& options, PairExplanation& e)
+{
+    e.portals = method_portals(zone, options.flow);
+    e.chain_2d = method_uses_2d_vis(zone, options.flow);
+    ChainProbe probe;
+    probe.from = a;
+    probe.to = b;
+    VisParams params;
+    params.level = options.flow.level;
+    params.threads = options.flow.threads;
+    params.target_checks = options.flow.target_checks;
+    if (!options.flow.passages)
+        params.passage_budget_bytes = 0;
+    params.progress = options.flow.progress;
+    params.probe = &probe;
+    const uint32_t regions = uint32_t(zone.region_count());
+    const Pvs flow = e.chain_2d ? bake_portal_vis_2d(e.portals, regions, params) : bake_portal_vis(e.portals, regions, params);
+    e.flow_holds = flow.visible(a, b);
+    if (const FlowChain* best = probe.best())
+        e.chain = *best;
+}
+
+std::string describe(const PairExplanation& e)
+{
+    char text[512];
+    const char* unit = e.chain_2d ? "units wide" : "square units";
+    std::string chain_words = "portal-full has no chain from A to B";
+    if (e.chain) {
+        size_t narrowest = 0;
+        for (size_t k = 1; k < e.chain->steps.size(); ++k)
+            if (e.chain->steps[k].window_size < e.chain->steps[narrowest].window_size)
+                narrowest = k;
+        std::snprintf(text, sizeof text, "portal-full reaches B through %zu portals, narrowest window %.3g %s at step %zu",
+                      e.chain->steps.size(), e.chain->steps[narrowest].window_size, unit, narrowest + 1);
+        chain_words = text;
+    }
+    const unsigned long long tries = e.witness_tries;
+    switch (e.verdict) {
+    case PairVerdict::Sees:
+        return "sees: a sight line joins A and B, and the PVS holds B";
+    case PairVerdict::Overdraw:
+        std::snprintf(text, sizeof text, "overdraw: the PVS holds B, but no sight line was found in %llu lines; %s",
+                      tries, chain_words.c_str());
+        return text;
+    case PairVerdict::WouldPop:
+        return std::string("would pop: a sight line joins A and B, but the PVS lacks B") +
+               (e.flow_holds ? " (portal-full holds it)" : "");
+    case PairVerdict::Hidden:
+        std::snprintf(text, sizeof text, "hidden: no sight line was found in %llu lines, and the PVS lacks B", tries);
+        return text;
+    case PairVerdict::Unexplained:
+        std::snprintf(text, sizeof text,
+                      "unexplained: the PVS holds B with no sight line found in %llu lines and no chain of portal-full "
+                      "(a bit set by hand or by a looser rule)",
+                      tries);
+        return text;
+    }
+    return {};
+}
+
+} // namespace
+
+const char* pair_verdict_name(PairVerdict verdict)
+{
+    switch (verdict) {
+    case PairVerdict::Sees: return "sees";
+    case PairVerdict::Overdraw: return "overdraw";
+    case PairVerdict::WouldPop: return "would-pop";
+    case PairVerdict::Hidden: return "hidden";
+    case PairVerdict::Unexplained: return "unexplained";
+    }
+    return "?";
+}
+
+WitnessCamera camera_looking(const glm::dvec3& from, const glm::dvec3& to)
+{
+    const glm::dvec3 d = to - from;
+    WitnessCamera camera;
+    camera.eye = from;
+    camera.yaw_degrees = std::atan2(d.y, d.x) * 180.0 / M_PI;
+    camera.pitch_degrees = std::atan2(d.z, std::hypot(d.x, d.y)) * 180.0 / M_PI;
+    return camera;
+}
+
+PairExplanation explain_pair(const Zone& zone, const Pvs* pvs, uint32_t a, uint32_t b, const ExplainOptions& options)
+{
+    const size_t regions = zone.region_count();
+    if (!zone.tree.exists() || zone.view_grid)
+        throw std::invalid_argument(zone.source.path + " has no BSP tree of regions to explain a pair on");
+    for (const uint32_t r : {a, b})
+        if (r >= regions)
+            throw std::invalid_argument("region " + std::to_string(r) + " is out of range: " + zone.source.path +
+                                        " has " + std::to_string(regions) + " regions");
+    PairExplanation e;
+    e.a = a;
+    e.b = b;
+    e.has_pvs = pvs != nullptr && a < pvs->row_count() && b < pvs->region_count();
+    e.in_pvs = !e.has_pvs || pvs->visible(a, b); // no PVS: every region is drawn
+    if (options.want_chain)
+        find_chain(zone, a, b, options, e);
+
+    const TreeTracer tracer(zone.tree, zone.regions, options.flow.sky);
+    const RegionSampler sampler(zone);
+    const Aabb box = zone.bounds();
+    WitnessSearch search;
+    search.seed = options.seed;
+    search.reach = box.empty() ? 1e5 : 2.0 * double(glm::length(box.max - box.min)) + 1.0;
+    // Half the lines where the flow's chain says they are (its first and last windows), then
+    // through any portal of A and any of B.
+    const std::vector<std::vector<glm::dvec3>> a_portals = region_portal_polygons(e.portals, a);
+    const std::vector<std::vector<glm::dvec3>> b_portals = region_portal_polygons(e.portals, b);
+    std::vector<std::vector<glm::dvec3>> first, last;
+    if (e.chain && !e.chain_2d && e.chain->steps.size() >= 2) {
+        first.push_back(e.chain->steps.front().window);
+        last.push_back(e.chain->steps.back().window);
+    }
+    uint64_t used = 0;
+    for (int phase = first.empty() ? 1 : 0; phase < 2 && !e.witness; ++phase) {
+        search.near_a = phase == 0 ? first : a_portals;
+        search.near_b = phase == 0 ? last : b_portals;
+        search.budget = phase == 0 ? options.witness_budget / 2 : options.witness_budget - used;
+        search.seed = options.seed + uint64_t(phase);
+        uint64_t tries = 0;
+        e.witness = find_sight_line(tracer, sampler, a, b, search, &tries);
+        used += tries;
+    }
+    e.witness_tries = used;
+    if (e.witness)
+        e.camera = camera_looking(e.witness->from, e.witness->to);
+
+    if (e.witness)
+        e.verdict = e.in_pvs ? PairVerdict::Sees : PairVerdict::WouldPop;
+    else if (!e.in_pvs)
+        e.verdict = PairVerdict::Hidden;
+    else
+        e.verdict = e.has_pvs && options.want_chain && !e.chain && a != b ? PairVerdict::Unexplained : PairVerdict::Overdraw;
+    if (a == b && e.in_pvs)
+        e.verdict = PairVerdict::Sees;
+    e.summary = describe(e);
+    return e;
+}
+
+} // namespace pvs
