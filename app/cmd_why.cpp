@@ -46,6 +46,11 @@ void print_text(const Zone& zone, const std::string& pvs_name, const PairExplana
         print_point("from", e.witness->from);
         print_point("to", e.witness->to);
         std::printf("  camera       --camera %s\n", camera_argument(*e.camera).c_str());
+        std::printf("  crosses      %zu regions", e.witness_regions.size());
+        if (e.flow_cut)
+            std::printf("; portal-full's row of A lacks region %u, the %zu-th", e.witness_regions[*e.flow_cut],
+                        *e.flow_cut + 1);
+        std::printf("\n");
     } else {
         std::printf("  sight line   none found in %llu lines\n", static_cast<unsigned long long>(e.witness_tries));
     }

@@ -41,6 +41,8 @@ nlohmann::json pair_explanation_json(const std::string& file, const std::string&
                        {"argument", camera_argument(*e.camera)}};
     else
         j["camera"] = nullptr;
+    j["witness_regions"] = e.witness_regions;
+    j["flow_cut"] = e.flow_cut ? nlohmann::json(e.witness_regions[*e.flow_cut]) : nlohmann::json(nullptr);
     j["chain_method"] = e.chain_2d ? "portal-full (2-D)" : "portal-full";
     j["flow_holds"] = e.flow_holds;
     j["size_unit"] = e.chain_2d ? "width" : "area";

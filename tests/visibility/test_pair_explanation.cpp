@@ -57,6 +57,11 @@ void expect_witness_open(const Zone& zone, const PairExplanation& e)
     EXPECT_EQ(leaves.back(), int32_t(e.b)) << "the witness ends outside B";
     for (const int32_t region : leaves)
         EXPECT_GE(region, 0) << "the witness " << e.a << " -> " << e.b << " passes a solid or outside leaf";
+    std::vector<uint32_t> crossed; // the walk's regions, consecutive repeats once
+    for (const int32_t region : leaves)
+        if (region >= 0 && (crossed.empty() || crossed.back() != uint32_t(region)))
+            crossed.push_back(uint32_t(region));
+    EXPECT_EQ(e.witness_regions, crossed);
     ASSERT_TRUE(e.camera);
     const glm::dvec3 along = glm::normalize(e.witness->to - e.witness->from);
     EXPECT_NEAR(std::atan2(along.y, along.x) * 180.0 / M_PI, e.camera->yaw_degrees, 1e-9);
@@ -199,6 +204,29 @@ TEST(PairExplanation, DoomTwoDimensionalChain)
             expect_witness_open(zone, e);
     }
     EXPECT_GT(chains, 0u);
+}
+
+// A bit taken out of the hand-derived PVS pops: the witness is the camera that shows it, and the
+// flow (which holds the pair) is not cut along it.
+TEST(PairExplanation, RemovedBitWouldPop)
+{
+    SHARED_DATA_OR_SKIP(path, "visdemo/example.bsp");
+    const Zone& zone = *test::shared_zone("visdemo/example.bsp");
+    const Pvs hand = Pvs::build(11, [&](uint32_t r, std::span<uint64_t> row) {
+        for (const uint32_t c : test::kExampleExpected[r])
+            if (!(r == 0 && c == 10))
+                bits::set(row, c);
+        return true;
+    });
+    const PairExplanation e = explain_pair(zone, &hand, 0, 10, quick_options());
+    EXPECT_EQ(e.verdict, PairVerdict::WouldPop) << e.summary;
+    EXPECT_FALSE(e.in_pvs);
+    expect_witness_open(zone, e);
+    EXPECT_TRUE(e.flow_holds);
+    EXPECT_FALSE(e.flow_cut);
+    EXPECT_GE(e.witness_regions.size(), 5u) << "0 sees 10 only through the corridor, 2, 4, 5, 6, 7";
+    const PairExplanation kept = explain_pair(zone, &hand, 10, 0, quick_options());
+    EXPECT_EQ(kept.verdict, PairVerdict::Sees) << kept.summary;
 }
 
 TEST(PairExplanation, RegionOutOfRangeNamesTheCount)

@@ -30,8 +30,23 @@ std::vector<std::vector<glm::dvec3>> region_portal_polygons(const PortalSet& set
     return polygons;
 }
 
-// The flow's chain from a to b, if it holds the pair (into e.chain, e.portals).
-void find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& options, PairExplanation& e)
+// The regions the segment passes through, in order (consecutive repeats once).
+std::vector<uint32_t> regions_along(const TreeTracer& tracer, const glm::dvec3& from, const glm::dvec3& to)
+{
+    std::vector<uint32_t> regions;
+    const double length = glm::length(to - from);
+    if (!(length > 0.0))
+        return regions;
+    TreeTracer::Scratch scratch;
+    tracer.trace(from, (to - from) / length, length, scratch, [&](int32_t region, double, double) {
+        if (regions.empty() || regions.back() != uint32_t(region))
+            regions.push_back(uint32_t(region));
+    });
+    return regions;
+}
+
+// The flow's chain from a to b, if it holds the pair (into e.chain, e.portals); returns the flow's PVS.
+Pvs find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& options, PairExplanation& e)
 {
     e.portals = method_portals(zone, options.flow);
     e.chain_2d = method_uses_2d_vis(zone, options.flow);
@@ -51,6 +66,7 @@ void find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& 
     e.flow_holds = flow.visible(a, b);
     if (const FlowChain* best = probe.best())
         e.chain = *best;
+    return flow;
 }
 
 std::string describe(const PairExplanation& e)
@@ -76,6 +92,13 @@ std::string describe(const PairExplanation& e)
                       tries, chain_words.c_str());
         return text;
     case PairVerdict::WouldPop:
+        if (e.flow_cut) {
+            std::snprintf(text, sizeof text,
+                          "would pop: a sight line joins A and B, but the PVS lacks B; along it, portal-full reaches "
+                          "%zu of its %zu regions and stops before region %u",
+                          *e.flow_cut, e.witness_regions.size(), e.witness_regions[*e.flow_cut]);
+            return text;
+        }
         return std::string("would pop: a sight line joins A and B, but the PVS lacks B") +
                (e.flow_holds ? " (portal-full holds it)" : "");
     case PairVerdict::Hidden:
@@ -129,8 +152,9 @@ PairExplanation explain_pair(const Zone& zone, const Pvs* pvs, uint32_t a, uint3
     e.b = b;
     e.has_pvs = pvs != nullptr && a < pvs->row_count() && b < pvs->region_count();
     e.in_pvs = !e.has_pvs || pvs->visible(a, b); // no PVS: every region is drawn
+    std::optional<Pvs> flow;
     if (options.want_chain)
-        find_chain(zone, a, b, options, e);
+        flow = find_chain(zone, a, b, options, e);
 
     const TreeTracer tracer(zone.tree, zone.regions, options.flow.sky);
     const RegionSampler sampler(zone);
@@ -158,8 +182,13 @@ PairExplanation explain_pair(const Zone& zone, const Pvs* pvs, uint32_t a, uint3
         used += tries;
     }
     e.witness_tries = used;
-    if (e.witness)
+    if (e.witness) {
         e.camera = camera_looking(e.witness->from, e.witness->to);
+        e.witness_regions = regions_along(tracer, e.witness->from, e.witness->to);
+        for (size_t k = 0; flow && k < e.witness_regions.size() && !e.flow_cut; ++k)
+            if (!flow->visible(a, e.witness_regions[k]))
+                e.flow_cut = k;
+    }
 
     if (e.witness)
         e.verdict = e.in_pvs ? PairVerdict::Sees : PairVerdict::WouldPop;

@@ -10,6 +10,8 @@
 //    portals and level: the 2-D flow on a map extruded from 2-D, as the method does) reached B
 //    from A (flow_chain.h), or none when the flow does not hold the pair. The chain explains
 //    portal-full's bit; for another PVS it is what the clipped flow finds for the same pair.
+//  - witness_regions / flow_cut: the regions along the witness, and the first of them the flow's
+//    row of A lacks (a missing bit's "cut here");
 //  - a camera standing at the witness's eye and looking along it, so `pvscope render --camera`
 //    and the inspector show the view;
 //  - verdict: Sees (a sight line exists and the PVS holds B), Overdraw (the PVS holds B, no sight
@@ -59,6 +61,11 @@ struct PairExplanation {
     bool chain_2d = false;   // the chain is the 2-D flow's (widths, not areas)
     bool flow_holds = false; // the flow's row of A holds B (it then has a chain)
     PortalSet portals;       // the portals the chain's steps index
+    // The regions the witness passes through, in order from A to B, and (when the flow lacks a
+    // region of them) the index of the first one portal-full's row of A lacks: where its chain
+    // along the sight line was cut. For a missing bit, "the flow reached this far".
+    std::vector<uint32_t> witness_regions;
+    std::optional<size_t> flow_cut;
     PairVerdict verdict = PairVerdict::Hidden;
     std::string summary;     // one line in plain words
 };
