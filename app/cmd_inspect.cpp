@@ -88,6 +88,19 @@ void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(c
     cmd->add_option("--case", o->stability_case,
                     "Open crafted stability case NAME[:METHOD] at its camera, culling with METHOD's PVS (default "
                     "portal-full), the Stability panel open (instead of a file; pvscope stability --cases lists them)");
+    cmd->add_option("--why", o->why,
+                    "A,B: explain why region A sees region B at start (as pvscope why): region A selected, its "
+                    "Region panel showing the verdict and chain, the viewport drawing the sight line and the "
+                    "numbered portal chain")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                const size_t comma = text.find(',');
+                const bool ok = comma != std::string::npos && comma > 0 && comma + 1 < text.size() &&
+                                text.find_first_not_of("0123456789,") == std::string::npos &&
+                                text.find(',', comma + 1) == std::string::npos;
+                return ok ? std::string() : "expects two region ids A,B, got '" + text + "'";
+            },
+            "A,B"));
     cmd->callback([o, &exit_code, run] { exit_code = run(*o); });
 }
 

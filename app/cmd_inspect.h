@@ -37,6 +37,7 @@ struct InspectArguments {
     bool compare = false;
     std::string stability_case;
     std::string hidden_lines = "faint";
+    std::string why; // "A,B": explain the pair at start
 };
 
 // Registers the subcommand; when it runs, `exit_code` receives run(arguments).

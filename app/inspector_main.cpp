@@ -32,6 +32,11 @@ pvs::gui::InspectorOptions inspector_options(const pvs::app::InspectArguments& a
                                                                 : ui::HiddenLines::Faint;
     options.pick_centre = a.pick_centre;
     options.bsp_node = a.bsp_node;
+    if (!a.why.empty()) {
+        const size_t comma = a.why.find(',');
+        options.why = std::array<uint32_t, 2>{uint32_t(std::stoul(a.why.substr(0, comma))),
+                                              uint32_t(std::stoul(a.why.substr(comma + 1)))};
+    }
     options.compare = a.compare;
     options.stability_case = a.stability_case;
     if (!a.bake.empty()) {

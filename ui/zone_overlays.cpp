@@ -87,6 +87,30 @@ void paint_zone_lines(Image& image, const OverlayScene& scene, const LineProject
     }
 }
 
+// The explained pair: its chain's portals numbered in order (the label at each one's centre),
+// the windows the flow saw through them, and the sight line on top.
+void paint_pair(Image& image, const OverlayScene& scene, const LineProjection& lines, std::vector<OverlayLabel>& labels)
+{
+    const PairOverlay& pair = *scene.pair;
+    for (size_t k = 0; k < pair.chain_portals.size(); ++k) {
+        const std::vector<glm::vec3>& polygon = pair.chain_portals[k];
+        if (polygon.empty())
+            continue;
+        outline_polygon_3d(image, lines, polygon, kChainPortalColor);
+        if (k < pair.chain_windows.size() && pair.chain_windows[k].size() >= 2)
+            outline_polygon_3d(image, lines, pair.chain_windows[k], kChainWindowColor);
+        glm::vec3 centre(0.0f);
+        for (const glm::vec3& p : polygon)
+            centre += p;
+        centre /= float(polygon.size());
+        if (const auto at = project_to_pixel(scene.view, image.width, image.height, centre))
+            if (at->x >= 0.0f && at->y >= 0.0f && at->x < float(image.width) && at->y < float(image.height))
+                labels.push_back({*at, std::to_string(k + 1), kChainPortalColor});
+    }
+    if (pair.sight_line)
+        draw_line_3d(image, lines, (*pair.sight_line)[0], (*pair.sight_line)[1], kSightLineColor);
+}
+
 } // namespace
 
 Membership classify_region(uint32_t region, int32_t current, std::span<const uint32_t> visible,
@@ -157,6 +181,8 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
         draw_box_3d(image, lines, scene.zone->view_grid->cell_bounds(uint32_t(scene.cull_cell)), kViewCellColor);
     if (settings.locked_frustum && scene.locked)
         draw_frustum(image, lines, scene.cull, kLockedFrustumColor);
+    if (settings.pair_view && scene.pair)
+        paint_pair(image, scene, lines, labels);
 }
 
 const char* hidden_lines_name(HiddenLines mode)
@@ -169,7 +195,7 @@ const char* hidden_lines_name(HiddenLines mode)
     return "?";
 }
 
-std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone, bool edited_pairs)
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone, bool edited_pairs, bool pair)
 {
     std::vector<LegendEntry> legend;
     if (settings.split_planes) {
@@ -192,6 +218,11 @@ std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool gr
         legend.push_back({"the camera's view cell (its PVS row)", kViewCellColor});
     if (edited_pairs)
         legend.push_back({"hand-edited pair with the camera's region", kEditedPairColor});
+    if (pair && settings.pair_view) {
+        legend.push_back({"sight line A -> B", kSightLineColor});
+        legend.push_back({"portal chain A -> B (numbered)", kChainPortalColor});
+        legend.push_back({"window the flow saw through", kChainWindowColor});
+    }
     return legend;
 }
 

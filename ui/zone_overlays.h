@@ -33,6 +33,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -50,6 +51,7 @@ struct OverlaySettings {
     bool zone_lines = true;
     bool locked_frustum = true;
     bool view_cell = true;
+    bool pair_view = true; // the explained pair's sight line and portal chain (OverlayScene::pair)
     // Lines behind the picture's walls (needs OverlayScene::occlusion; Shown = no depth test).
     HiddenLines hidden_lines = HiddenLines::Faint;
 };
@@ -73,6 +75,9 @@ inline constexpr uint32_t kPortalColor = 0x00FFC0;
 inline constexpr uint32_t kZoneLineColor = 0xFF00FF; // as kFlagTints' zone line
 inline constexpr uint32_t kViewCellColor = 0x60A0FF;
 inline constexpr uint32_t kEditedPairColor = 0xFF60FF;
+inline constexpr uint32_t kSightLineColor = 0xFF8000;  // the explained pair's witness
+inline constexpr uint32_t kChainPortalColor = 0x40FF40; // its chain's portals, numbered
+inline constexpr uint32_t kChainWindowColor = 0xFFFFFF; // the part of each the flow still saw
 inline constexpr uint32_t kSplitPlaneAlpha = 24; // a dozen planes overlap: keep each faint
 inline constexpr uint32_t kCurrentSplitPlaneAlpha = 90;
 
@@ -81,6 +86,14 @@ uint32_t membership_color(Membership membership);
 void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
                       std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out);
 const char* membership_name(Membership membership);
+
+// An explained pair (visibility/eval/pair_explanation.h) as the overlay draws it: the sight line
+// from A to B, and per step of the flow's chain the portal crossed and the window seen through it.
+struct PairOverlay {
+    std::optional<std::array<glm::vec3, 2>> sight_line;
+    std::vector<std::vector<glm::vec3>> chain_portals; // in chain order: labelled 1, 2, ...
+    std::vector<std::vector<glm::vec3>> chain_windows; // empty entries where none is drawn
+};
 
 // One frame's inputs. Spans and pointers are borrowed for the call; null / empty = not available
 // (that overlay then draws nothing).
@@ -101,6 +114,7 @@ struct OverlayScene {
     // Regions r whose pair (cull_region, r) a hand edit changed (ascending): boxed in
     // kEditedPairColor so the edits show where they act.
     std::span<const uint32_t> edited_regions;
+    const PairOverlay* pair = nullptr; // the explained pair (null: none)
 };
 
 // A text label at a pixel of the picture (a zone line's target).
@@ -121,8 +135,8 @@ struct LegendEntry {
     uint32_t rgb;
 };
 // grid_zone: the zone has a view grid (its view cell overlay is then listed); edited_pairs: the
-// hand-edited pairs are boxed this frame.
+// hand-edited pairs are boxed this frame; pair: an explained pair is drawn.
 std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone = false,
-                                        bool edited_pairs = false);
+                                        bool edited_pairs = false, bool pair = false);
 
 } // namespace pvs::ui

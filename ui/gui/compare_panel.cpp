@@ -92,6 +92,26 @@ void draw_table(InspectorState& state, const ui::CompareResult& result)
     ImGui::EndTable();
 }
 
+// Per method, the pairs it misses (the first few, pvs_gap.h): a click explains the pair (the
+// Region panel then shows why, the viewport the sight line that pops).
+void draw_missing_pairs(InspectorState& state, const ui::CompareResult& result)
+{
+    for (size_t i = 0; i < result.rows.size(); ++i) {
+        const ui::CompareRow& r = result.rows[i];
+        if (r.missing_pairs.empty())
+            continue;
+        const std::string title = r.method + " " + r.params + ": missing pairs##missing" + std::to_string(i);
+        if (!ImGui::TreeNode(title.c_str()))
+            continue;
+        for (const auto& [a, b] : r.missing_pairs) {
+            const std::string label = std::to_string(a) + " -> " + std::to_string(b) + "##" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str()))
+                state.request_explanation(a, b);
+        }
+        ImGui::TreePop();
+    }
+}
+
 } // namespace
 
 void draw_compare_panel(InspectorState& state, ComparePanel& panel)
@@ -107,6 +127,7 @@ void draw_compare_panel(InspectorState& state, ComparePanel& panel)
                                                                                      : pvs_source_name(state.pvs_source()));
             draw_chart(state, *result);
             draw_table(state, *result);
+            draw_missing_pairs(state, *result);
         }
     }
     ImGui::End();

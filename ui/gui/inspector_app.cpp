@@ -223,7 +223,7 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
         const bool working = state.bake_job().status() == BakeStatus::Running ||
-                             state.compare_job().status() == BakeStatus::Running;
+                             state.compare_job().status() == BakeStatus::Running || state.explanation_running();
         if (scripted && working && frames == 0) {
             glfwSwapBuffers(platform.window);
             continue; // a scripted bake: the timed or screenshot frames start once it is done
@@ -287,6 +287,13 @@ int run_inspector(const InspectorOptions& options)
     }
     if (options.bsp_node >= 0 && size_t(options.bsp_node) < state.zone().tree.nodes.size())
         state.selected_node = options.bsp_node;
+    if (options.why) {
+        state.select_region(int32_t((*options.why)[0]));
+        if (!state.request_explanation((*options.why)[0], (*options.why)[1])) {
+            std::fprintf(stderr, "pvscope: error: --why: %s\n", state.error().c_str());
+            return 1;
+        }
+    }
     if (options.camera) {
         const auto& [x, y, z, yaw, pitch] = *options.camera;
         Camera& view = state.view_camera();

@@ -44,6 +44,9 @@ struct InspectorOptions {
     // camera, culling with METHOD's PVS (portal-full when not given), instead of zone_path, with
     // the Stability panel open and its table run (the docs' Stability screenshot).
     std::string stability_case;
+    // Explain this pair (A, B) at start (InspectorState::request_explanation), region A selected;
+    // scripted runs count their frames only once the explanation is done.
+    std::optional<std::array<uint32_t, 2>> why;
 };
 
 // Opens the window and runs until it is closed or the screenshot is written. Returns the

@@ -131,6 +131,7 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     if (portal_build_.valid())
         portal_build_.wait(); // it reads the zone about to go
     portal_build_ = {};
+    clear_explanation(); // waits for a job in flight: it reads the zone too
     occlusion_.reset();
     occlusion_frame_ = 0;
     culler_.reset();
@@ -276,6 +277,7 @@ const CullStats& InspectorState::frame()
     poll_bake();
     compare_.poll();
     take_finished_portals();
+    take_finished_explanation();
     ++frame_number_; // first: the overlays' per-frame caches key on it
     last_cull_ = culler_->cull(cull_, {cull_mode, true}, visible_);
     update_after_pvs();

@@ -31,6 +31,7 @@
 #include "ui/zone_overlays.h"
 #include "visibility/camera.h"
 #include "visibility/culler.h"
+#include "visibility/eval/pair_explanation.h"
 #include "visibility/geometry/winding.h"
 #include "visibility/region_lookup.h"
 #include "visibility/pvs_edits.h"
@@ -244,6 +245,22 @@ public:
     const std::string& stability_case_name() const { return case_name_; }
     const std::vector<std::string>& stability_case_missing() const { return case_missing_; }
 
+    // ---- Why does A see B? (pair_view.cpp) ----------------------------------------------------
+    // Explains the pair (visibility/eval/pair_explanation.h) for the active PVS on a background
+    // thread (its portal-full flow takes about a second on e1m1); frame() takes the result and
+    // the overlay then draws the sight line and the numbered chain (ui::PairOverlay). False, with
+    // error() saying why, without a zone with a BSP tree or for a region out of range. A new
+    // request waits for the one in flight and replaces it; opening a zone drops it.
+    bool request_explanation(uint32_t a, uint32_t b);
+    bool explanation_running() const { return explain_job_.valid(); }
+    const std::optional<PairExplanation>& explanation() const { return explanation_; }
+    // Blocks until the request in flight is done (tests, scripts); null when there is none.
+    const PairExplanation* wait_for_explanation();
+    void clear_explanation();
+    // The view camera at the witness's A end, looking at its B end (the culling camera follows
+    // unless locked): B from A, or the pop of a missing bit. False without a witness.
+    bool look_along_witness();
+
     // ---- Hover -----------------------------------------------------------------------------------
     // The face of the last frame's picture under pixel (x, y) by a ray from the view camera
     // against the faces the picture drew, front sides (ui/picture_occlusion.h): one ray, cheap
@@ -286,6 +303,7 @@ private:
     // Embree cannot give one (error() says why).
     const ui::PictureOcclusion* picture_occlusion();
     void update_edited_pairs();
+    void take_finished_explanation();
 
     std::unique_ptr<Zone> zone_;
     std::unique_ptr<Culler> culler_;
@@ -337,6 +355,10 @@ private:
     CompareJob compare_;
     VisReport baked_report_;
     uint64_t pvs_generation_ = 0;
+    std::optional<PairExplanation> explanation_;
+    ui::PairOverlay pair_overlay_; // explanation_ as the overlay draws it
+    std::optional<Pvs> explain_pvs_; // the PVS the job in flight explains (a copy: the active one may change)
+    std::future<PairExplanation> explain_job_; // after zone_: destroyed (waited for) before it
     BakeJob bake_; // last: destroyed (stopped) first, before the zone it reads
 };
 

@@ -141,6 +141,7 @@ void InspectorState::paint_overlays()
         scene.occlusion = picture_occlusion();
     update_edited_pairs();
     scene.edited_regions = edited_pairs_;
+    scene.pair = explanation_ ? &pair_overlay_ : nullptr;
     ui::paint_overlays(image_, overlays, scene, labels_);
     overlay_depth_rays_ = occlusion_ && scene.occlusion ? occlusion_->rays() : 0;
 }

@@ -69,8 +69,14 @@ struct RegionPanel {
     char edit_list_path[256] = "pvs-edits.json";
     char save_path[256] = "";
     std::string edit_message;
+    int why_target = 0; // the "Why does this region see...?" field
 };
 void draw_region_panel(InspectorState& state, RegionPanel& panel);
+// The Region panel's "Why does A see B?" section (why_panel.cpp): a region field, the verdict,
+// the chain and the button that looks along the sight line. `region` is A.
+void draw_why_section(InspectorState& state, int& target, int32_t region);
+// A context menu on the last item offering to explain the pair (a, b).
+void why_context_menu(InspectorState& state, uint32_t a, uint32_t b);
 
 // ---- BSP: the camera's path through the tree, a node browser, the regions under a node ----------
 struct BspPanel {

@@ -45,9 +45,10 @@ void update_lists(InspectorState& state, int32_t region, RegionPanel& panel)
 
 // A clipped list of region ids; a click selects the region and goes there. `edited(r)` marks
 // the entries whose bit an edit set.
-template <class Edited>
+// `pair(r)` is the (A, B) pair a right click on entry r offers to explain.
+template <class Edited, class Pair>
 void draw_region_list(InspectorState& state, const char* id, const std::vector<uint32_t>& regions, float height,
-                      Edited&& edited)
+                      Edited&& edited, Pair&& pair)
 {
     if (!ImGui::BeginChild(id, {0.0f, height}, true)) {
         ImGui::EndChild();
@@ -63,6 +64,8 @@ void draw_region_list(InspectorState& state, const char* id, const std::vector<u
                 state.select_region(int32_t(r));
                 state.go_to_region(r);
             }
+            const std::pair<uint32_t, uint32_t> ab = pair(r);
+            why_context_menu(state, ab.first, ab.second);
         }
     ImGui::EndChild();
 }
@@ -77,11 +80,13 @@ void draw_lists(InspectorState& state, RegionPanel& panel)
                     panel.row_missing ? ": row missing, all visible" : "");
         const EditablePvs* editor = state.pvs_source() == PvsSource::Edited ? state.pvs_editor() : nullptr;
         const uint32_t region = uint32_t(panel.lists_region);
-        draw_region_list(state, "row", panel.row, list_height,
-                         [&](uint32_t r) { return editor && editor->edited(region, r); });
+        draw_region_list(
+            state, "row", panel.row, list_height, [&](uint32_t r) { return editor && editor->edited(region, r); },
+            [&](uint32_t r) { return std::pair(region, r); });
         ImGui::Text("visible from %zu (PVS column)", panel.column.size());
-        draw_region_list(state, "column", panel.column, list_height,
-                         [&](uint32_t r) { return editor && editor->edited(r, region); });
+        draw_region_list(
+            state, "column", panel.column, list_height, [&](uint32_t r) { return editor && editor->edited(r, region); },
+            [&](uint32_t r) { return std::pair(r, region); });
     }
     if (!panel.lists_neighbours) {
         ImGui::TextDisabled("neighbours through portals:");
@@ -93,7 +98,10 @@ void draw_lists(InspectorState& state, RegionPanel& panel)
         return;
     }
     ImGui::Text("%zu neighbours through portals", panel.neighbours.size());
-    draw_region_list(state, "neighbours", panel.neighbours, list_height, [](uint32_t) { return false; });
+    const uint32_t region = uint32_t(panel.lists_region);
+    draw_region_list(
+        state, "neighbours", panel.neighbours, list_height, [](uint32_t) { return false; },
+        [&](uint32_t r) { return std::pair(region, r); });
 }
 
 // The popping risk of the edits against the Compare panel's reference, when it has one.
@@ -229,6 +237,7 @@ void draw_region_panel(InspectorState& state, RegionPanel& panel)
     ImGui::Text("%zu faces, %llu triangles", zone.faces_of_region(uint32_t(region)).size(),
                 static_cast<unsigned long long>(state.region_triangles(uint32_t(region))));
     update_lists(state, region, panel);
+    draw_why_section(state, panel.why_target, region);
     draw_editing(state, panel, region);
     draw_lists(state, panel);
     ImGui::End();

@@ -87,7 +87,8 @@ void draw_legend(const InspectorState& state, ImVec2 origin, ImVec2 size)
     const bool edits = state.pvs_source() == PvsSource::Edited && state.pvs_editor() &&
                        state.pvs_editor()->edit_count() > 0;
     const std::vector<ui::LegendEntry> legend =
-        ui::overlay_legend(state.overlays, state.has_zone() && state.zone().view_grid.has_value(), edits);
+        ui::overlay_legend(state.overlays, state.has_zone() && state.zone().view_grid.has_value(), edits,
+                           state.explanation().has_value());
     const float line = ImGui::GetTextLineHeight() + 2.0f, swatch = ImGui::GetTextLineHeight() - 2.0f;
     float width = ImGui::CalcTextSize("no overlays (Overlays menu)").x;
     for (const ui::LegendEntry& e : legend)
