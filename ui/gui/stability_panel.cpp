@@ -77,8 +77,15 @@ void draw_stability_panel(InspectorState& state, StabilityPanel& panel)
         ImGui::Text("open: %s, culling with %s", state.stability_case_name().c_str(), state.baked_label().c_str());
         if (state.stability_case_missing().empty())
             ImGui::TextUnformatted("  the PVS holds every pair of the truth");
-        for (const std::string& pair : state.stability_case_missing())
-            ImGui::TextColored(kBroken, "  missing %s", pair.c_str());
+        // "A -> B": a click explains the pair (the Region panel shows why, the viewport the pop).
+        for (const std::string& pair : state.stability_case_missing()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, kBroken);
+            const bool clicked = ImGui::Selectable(("  missing " + pair + "##case").c_str());
+            ImGui::PopStyleColor();
+            unsigned a = 0, b = 0;
+            if (clicked && std::sscanf(pair.c_str(), "%u -> %u", &a, &b) == 2)
+                state.request_explanation(a, b);
+        }
     }
     if (!panel.message.empty())
         ImGui::TextColored(kBroken, "%s", panel.message.c_str());
