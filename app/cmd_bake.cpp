@@ -364,6 +364,7 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                         {"passage_seconds", r.passage_seconds},
                         {"target_checks", r.target_checks},
                         {"target_check_prunes", r.target_check_prunes},
+                        {"dominated_windows", r.dominated_windows},
                         {"load_seconds", load_seconds},
                         {"portalize_seconds", run.portal_seconds},
                         {"write_seconds", write_seconds},

@@ -347,12 +347,14 @@ TEST_P(PortalVisQuake, FastAndFullAgainstTheFilesPvs)
     EXPECT_NEAR(b->full_report.mean_visible, ours, 1e-9);
     EXPECT_NEAR(b->fast_report.mean_visible, mean_bits(b->fast), 1e-9);
     EXPECT_LE(ours, 1.10 * theirs);
-    // The same flow on the same portals as the file's tool: they part only where round-off meets
-    // an epsilon (e1m1: 39 + 20 bits of ~171 000), so a change to the flow's arithmetic (issue 6's
-    // speed work) that moves the result measurably fails here.
+    // The same flow on the same portals as the file's tool, plus the symmetry prune: it adds
+    // almost nothing the file lacks (e1m1: 45 bits of ~171 000, where round-off meets an epsilon),
+    // and drops a few tenths of a percent of the file's (e1m1: 391), bits no line through the
+    // twin portal reaches (SymmetryAndDominatedWindowsDropNoRealBit checks them against the
+    // reference, and the flow without them against the file to 0.1 %).
     const double file_bits = theirs * double(n);
-    EXPECT_LE(double(only_ours + only_file), file_bits / 1000.0) << only_ours << " bits only ours, " << only_file
-                                                                 << " only the file's";
+    EXPECT_LE(double(only_ours), file_bits / 1000.0) << only_ours << " bits only ours";
+    EXPECT_LE(double(only_file), file_bits / 200.0) << only_file << " bits only the file's";
     // Base vis is a superset of what any portal flow finds: WVis's rows lie within ours.
     EXPECT_EQ(fast_only_file, 0u);
     std::printf("[ %-7s ] %u regions, %zu portals. File mean %.1f. Fast: mean %.1f, %.3f s, %zu bits only the file's. "
@@ -458,7 +460,8 @@ TEST(PortalVis, PassagesRemoveNoRealBitOnARealMap)
     EXPECT_EQ(bits_only_in(b->full, unpruned), 0u);
     const size_t removed = bits_only_in(unpruned, b->full);
     EXPECT_EQ(bits_only_in(unpruned, b->full, &reference_rows(kSpeedUpMap)), 0u) << removed << " bits removed";
-    EXPECT_LE(removed * 10000, size_t(b->full_report.mean_visible * b->regions)) << "at most 0.01 % of the bits";
+    // The symmetry prune rides on other portals' rows, which the passages change a little too.
+    EXPECT_LE(removed * 5000, size_t(b->full_report.mean_visible * b->regions)) << "at most 0.02 % of the bits";
     std::printf("[ %-7s ] Full with passages %.3f s (%zu pairs, %.3f s to build), without %.3f s\n",
                 test::param_name(kSpeedUpMap).c_str(), b->full_report.seconds, b->full_report.passage_pairs,
                 b->full_report.passage_seconds, report.seconds);
@@ -527,6 +530,35 @@ TEST(PortalVis, TargetChecksDropNoRealBit)
                 "without %.3f s\n",
                 test::param_name(kSpeedUpMap).c_str(), b->full_report.seconds, b->full_report.target_checks,
                 b->full_report.target_check_prunes, bits_only_in(plain, b->full), report.seconds);
+}
+
+// The symmetry prune and the dominated windows (portal_vis.h) only remove walks: the flow with
+// them holds nothing the flow without them lacks, and what it drops no sampled line reaches.
+// Without them the flow is ericw's, and parts from the map's own PVS (its vis's) only where
+// round-off meets an epsilon.
+TEST(PortalVis, SymmetryAndDominatedWindowsDropNoRealBit)
+{
+    SHARED_DATA_OR_SKIP(path, kSpeedUpMap);
+    const QuakeBake* b = quake_bake(kSpeedUpMap);
+    ASSERT_NE(b, nullptr);
+    VisReport report;
+    const Rows classic = full_rows_without(
+        *b,
+        [](VisParams& p) {
+            p.symmetry = false;
+            p.dominated_windows = false;
+        },
+        report);
+    EXPECT_EQ(report.dominated_windows, 0u);
+    EXPECT_EQ(bits_only_in(b->full, classic), 0u);
+    const size_t dropped = bits_only_in(classic, b->full);
+    EXPECT_EQ(bits_only_in(classic, b->full, &reference_rows(kSpeedUpMap)), 0u) << dropped << " bits dropped";
+    const double file_bits = double(b->regions) * mean_bits(b->file);
+    EXPECT_LE(double(bits_only_in(classic, b->file) + bits_only_in(b->file, classic)), file_bits / 1000.0);
+    std::printf("[ %-7s ] Full with symmetry and dominated windows %.3f s (%zu windows dominated, %zu bits dropped), "
+                "without %.3f s\n",
+                test::param_name(kSpeedUpMap).c_str(), b->full_report.seconds, b->full_report.dominated_windows,
+                dropped, report.seconds);
 }
 
 void expect_only_self(const Pvs& pvs, uint32_t n)

@@ -184,6 +184,19 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
         // Mightsee prune, then "nothing new": might = prev.mightsee & (q's visbits or mightsee).
         if (!prev.may_see(q_leaf))
             continue;
+        // Symmetry: a line from the source's leaf through q, reversed, leaves q's leaf through
+        // q's twin and reaches the source's leaf. When the twin's row (its visbits once final,
+        // else its mightsee, by the same rule as every prune row) lacks that leaf, no line from
+        // it passes q: the walk does not go on through q.
+        if (symmetry_) {
+            const RunRow back = prune_rows.row(qi ^ 1u, rank, wait_nanos_);
+            if (!back) {
+                cancelled = true;
+                break;
+            }
+            if (!back.test(p.owner))
+                continue;
+        }
         const DirectedPortal& q = g_.portals[qi];
         // The next target's row is read a step from now if it passes the same prune: start
         // loading it (its first load was a third of this loop's time at 5000 rooms, perf).
@@ -257,10 +270,14 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
         f.pass = pass;
         f.portalplane = q.plane;
         narrow();
+        if (window_memo_ && memo_.dominated_or_remember(qi, source, head.portalplane.normal, pass, q.plane.normal, f.mightsee.data(),
+                                        f.lo, f.hi))
+            continue; // an earlier walk past q held this one (window_memo.h)
         const bool seen_before = bits::test(vis_, q.leaf);
         if (enter(q.leaf, qi) && seen_before && target_checks_ && !may_add_leaf(head))
             leave(); // nothing below could add a leaf
     }
+    memo_.clear();
     if (cancelled) {
         while (depth_ > 0)
             leave();

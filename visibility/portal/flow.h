@@ -17,6 +17,7 @@
 #include "visibility/portal/passages.h"
 #include "visibility/portal/portal_graph.h"
 #include "visibility/portal/run_rows.h"
+#include "visibility/portal/window_memo.h"
 
 #include <algorithm>
 #include <atomic>
@@ -37,6 +38,7 @@ public:
           dists_(point_capacity() + 1), sides_(point_capacity() + 1), b_side_(point_capacity()),
           ones_(g.words, ~uint64_t{0}), spread_(g.words, 0)
     {
+        memo_.resize(g.portals.size());
     }
 
     // The flow of directed portal pi of rank `rank`, into vis(). prune_rows gives the set each
@@ -48,6 +50,8 @@ public:
     std::span<const uint64_t> vis() const { return vis_; }
     void use_passages(const Passages* p) { passages_ = p; }
     void use_target_checks(bool on) { target_checks_ = on; }
+    void use_symmetry(bool on) { symmetry_ = on; }
+    void use_window_memo(bool on) { window_memo_ = on; }
     // Record, into probe->found[pi], the chain of each portal pi leaving probe->from the first
     // time its walk enters probe->to (flow_chain.h). found must hold a slot per directed portal.
     void watch(ChainProbe* probe) { probe_ = probe; }
@@ -58,6 +62,7 @@ public:
     // ma, mb: the mightsee rows of ai and of that portal, dense.
     void passage_row(uint32_t ai, uint32_t k, const uint64_t* ma, const uint64_t* mb, uint64_t* out);
     size_t leaf_recursions() const { return leaf_recursions_; }
+    size_t dominated_windows() const { return memo_.dominated(); }
     uint64_t wait_nanos() const { return wait_nanos_; } // waiting for older portals' visbits
     size_t bytes() const
     {
@@ -145,6 +150,9 @@ private:
     std::vector<uint64_t> ones_;
     std::vector<uint64_t> spread_; // a narrow passage row's words, spread out (spread_passage)
     bool target_checks_ = false;
+    WindowMemo memo_; // dominated windows (window_memo.h)
+    bool symmetry_ = true;
+    bool window_memo_ = true;
     ChainProbe* probe_ = nullptr;
     bool watching_ = false; // this walk's portal leaves probe_->from and has not entered probe_->to yet
     uint32_t head_portal_ = 0;

@@ -108,6 +108,7 @@ struct FlowTotals {
     std::atomic<uint64_t> wait_nanos{0};
     std::atomic<size_t> leaf_recursions{0};
     std::atomic<size_t> target_checks{0}, target_check_prunes{0};
+    std::atomic<size_t> dominated_windows{0};
 };
 
 // One worker of the flow: portals in rank order from `next` until none is left or the bake is
@@ -118,6 +119,8 @@ void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* pa
     FlowWorker worker(b.g, b.level);
     worker.use_target_checks(b.params.target_checks);
     worker.watch(b.params.probe);
+    worker.use_symmetry(b.params.symmetry);
+    worker.use_window_memo(b.params.dominated_windows);
     if (passages != nullptr)
         worker.use_passages(passages);
     const PruneRows prune_rows(order.rank.data(), b.state.get(), b.mightsee.data(), b.visbits.data());
@@ -157,6 +160,7 @@ void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* pa
     totals.target_check_prunes.fetch_add(worker.target_check_prunes());
     totals.wait_nanos.fetch_add(worker.wait_nanos());
     totals.leaf_recursions.fetch_add(worker.leaf_recursions());
+    totals.dominated_windows.fetch_add(worker.dominated_windows());
     std::lock_guard lock(b.worker_bytes_mutex);
     b.worker_bytes += worker.bytes();
 }
@@ -200,6 +204,7 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     rep.leaf_recursions = totals.leaf_recursions.load();
     rep.target_checks = totals.target_checks.load();
     rep.target_check_prunes = totals.target_check_prunes.load();
+    rep.dominated_windows = totals.dominated_windows.load();
     rep.wait_seconds = double(totals.wait_nanos.load()) * 1e-9;
 }
 

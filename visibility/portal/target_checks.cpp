@@ -17,7 +17,7 @@
 namespace pvs::portal_vis {
 namespace {
 
-constexpr uint32_t kTargetCheckLeaves = 16; // most unseen leaves worth checking
+constexpr uint32_t kTargetCheckLeaves = 64; // most unseen leaves worth checking
 
 } // namespace
 
