@@ -23,6 +23,15 @@ namespace pvs::app {
 
 namespace {
 
+// [[row, region, triangles], ...]: the excess pairs that draw the most for nothing.
+nlohmann::json worst_pairs_json(const std::vector<CostlyPair>& pairs)
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const CostlyPair& p : pairs)
+        out.push_back({p.row, p.region, p.cost});
+    return out;
+}
+
 
 std::string csv_text(const ui::CompareResult& result)
 {
@@ -57,6 +66,7 @@ nlohmann::json json_report(const CompareCommandOptions& o, const Zone& zone, con
                         {"crack_pixels", r.crack_pixels},
                         {"unknown_pixels", r.unknown_pixels},
                         {"missing_pairs", r.missing_pairs},
+                        {"worst_overdraw_pairs", worst_pairs_json(r.worst_overdraw_pairs)},
                         {"grazing_pixels", r.grazing_pixels},
                         {"triangle_overdraw", r.triangle_overdraw},
                         {"summary", r.summary}});

@@ -257,9 +257,19 @@ CompareResult run_compare(const Zone& zone, const CompareOptions& options)
             return result;
         }
     }
+    // What drawing a region for nothing costs: its triangles.
+    std::vector<uint64_t> triangles(zone.region_count(), 0);
+    if (reference.region_count() == zone.region_count())
+        for (uint32_t r = 0; r < zone.region_count(); ++r)
+            for (uint32_t face : zone.faces_of_region(r))
+                if (face < zone.mesh.faces.size())
+                    triangles[r] += zone.mesh.faces[face].triangle_count;
     for (CompareRow& row : result.rows) {
         // The file's PVS may be absent: then it is "none" too, and says so in its summary.
         const PvsGap gap = pvs_gap(row.pvs ? &*row.pvs : nullptr, reference);
+        if (triangles.size() == reference.region_count())
+            row.worst_overdraw_pairs =
+                worst_excess_pairs(row.pvs ? &*row.pvs : nullptr, reference, triangles, kListedWorstPairs);
         row.missing_bits = gap.missing_bits;
         row.excess_bits = gap.excess_bits;
         row.rows_missing_bits = gap.rows_missing_bits;

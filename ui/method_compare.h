@@ -20,6 +20,7 @@
 // time during the bake (nothing else runs then).
 #pragma once
 
+#include "visibility/eval/pvs_gap.h"
 #include "visibility/methods/vis_method.h"
 #include "visibility/zone.h"
 
@@ -60,6 +61,8 @@ struct CompareRow {
     uint64_t missing_bits = 0, excess_bits = 0;
     uint32_t rows_missing_bits = 0;
     std::vector<std::pair<uint32_t, uint32_t>> missing_pairs; // the first few (row, region) missing, pvs_gap.h
+    // The excess pairs that draw the most triangles for nothing (worst_excess_pairs, pvs_gap.h).
+    std::vector<CostlyPair> worst_overdraw_pairs;
     uint64_t popping_pixels = 0;    // confirmed by the tree trace, over all cameras
     uint64_t crack_pixels = 0;      // raster popping the trace rejected (blocked by a wall)
     uint64_t unknown_pixels = 0;    // raster popping the trace cannot decide (a face seen edge-on, no tree)

@@ -7,7 +7,13 @@
 #include "tests/support/test_data.h"
 #include "tests/support/visdemo_rows.h"
 #include "visibility/bit_row.h"
+#include "wld/eq/eq_zone_writer.h"
+#include "wld/gen/generate_zone.h"
 #include "wld/zone_file.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -227,6 +233,33 @@ TEST(PairExplanation, RemovedBitWouldPop)
     EXPECT_GE(e.witness_regions.size(), 5u) << "0 sees 10 only through the corridor, 2, 4, 5, 6, 7";
     const PairExplanation kept = explain_pair(zone, &hand, 10, 0, quick_options());
     EXPECT_EQ(kept.verdict, PairVerdict::Sees) << kept.summary;
+}
+
+// An EverQuest zone (a generated one, written as .s3d and read back): a region and its first
+// neighbour through the flow's portals see each other through one portal, and the witness is
+// open by the test's own walk.
+TEST(PairExplanation, EverQuestZoneNeighbours)
+{
+    gen::GenParams params = gen::demo_zone_params();
+    params.rooms = 12;
+    const Zone generated = gen::generate_zone(params);
+    const std::vector<uint8_t> bytes = eq::write_eq_zone(generated, "whyzone");
+    const std::string path = (std::filesystem::temp_directory_path() / "pvscope-why-test.s3d").string();
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    const Zone zone = load_zone(path, {});
+    std::remove(path.c_str());
+    ASSERT_GT(zone.region_count(), 2u);
+    ExplainOptions options = quick_options();
+    const PortalSet portals = method_portals(zone, options.flow);
+    ASSERT_FALSE(portals.portals.empty());
+    const Portal& first = portals.portals.front();
+    ASSERT_GE(first.regions[0], 0);
+    ASSERT_GE(first.regions[1], 0);
+    const PairExplanation e = explain_pair(zone, zone.baked_pvs ? &*zone.baked_pvs : nullptr,
+                                           uint32_t(first.regions[0]), uint32_t(first.regions[1]), options);
+    EXPECT_EQ(e.verdict, PairVerdict::Sees) << e.summary;
+    expect_witness_open(zone, e);
+    expect_chain_is_a_walk(e);
 }
 
 TEST(PairExplanation, RegionOutOfRangeNamesTheCount)

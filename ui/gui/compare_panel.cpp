@@ -92,8 +92,8 @@ void draw_table(InspectorState& state, const ui::CompareResult& result)
     ImGui::EndTable();
 }
 
-// Per method, the pairs it misses (the first few, pvs_gap.h): a click explains the pair (the
-// Region panel then shows why, the viewport the sight line that pops).
+// Per method, the pairs it misses (the first few, pvs_gap.h) and its worst overdraw: a click
+// explains the pair (the Region panel then shows why, the viewport the sight line or chain).
 void draw_missing_pairs(InspectorState& state, const ui::CompareResult& result)
 {
     for (size_t i = 0; i < result.rows.size(); ++i) {
@@ -107,6 +107,22 @@ void draw_missing_pairs(InspectorState& state, const ui::CompareResult& result)
             const std::string label = std::to_string(a) + " -> " + std::to_string(b) + "##" + std::to_string(i);
             if (ImGui::Selectable(label.c_str()))
                 state.request_explanation(a, b);
+        }
+        ImGui::TreePop();
+    }
+    // Per method, the excess pairs that draw the most triangles for nothing.
+    for (size_t i = 0; i < result.rows.size(); ++i) {
+        const ui::CompareRow& r = result.rows[i];
+        if (r.worst_overdraw_pairs.empty())
+            continue;
+        const std::string title = r.method + " " + r.params + ": worst overdraw##worst" + std::to_string(i);
+        if (!ImGui::TreeNode(title.c_str()))
+            continue;
+        for (const CostlyPair& p : r.worst_overdraw_pairs) {
+            const std::string label = std::to_string(p.row) + " -> " + std::to_string(p.region) + ": " +
+                                      std::to_string(p.cost) + " triangles##w" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str()))
+                state.request_explanation(p.row, p.region);
         }
         ImGui::TreePop();
     }

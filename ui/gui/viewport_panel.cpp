@@ -141,7 +141,8 @@ void draw_hover(InspectorState& state, const ViewportPanel& panel, ImVec2 origin
                       double(hover->distance));
 }
 
-// Shift + left click on a face: edit the pair (the camera's region, the clicked face's region).
+// Shift + left click on a face: explain or edit the pair (the camera's region, the clicked face's
+// region).
 constexpr const char* kPairPopup = "Edit PVS pair";
 
 void draw_pair_popup(InspectorState& state)
@@ -153,18 +154,24 @@ void draw_pair_popup(InspectorState& state)
     if (camera < 0 || region < 0 || !pvs || uint32_t(camera) >= pvs->row_count() ||
         uint32_t(region) >= pvs->region_count()) {
         ImGui::TextDisabled("no PVS pair to edit here");
-        ImGui::EndPopup();
-        return;
+    } else {
+        const bool sees = pvs->visible(uint32_t(camera), uint32_t(region));
+        ImGui::Text("camera's region %d %s region %d", camera, sees ? "sees" : "does not see", region);
+        ImGui::Separator();
+        for (bool visible : {false, true})
+            for (bool both : {false, true}) {
+                const std::string label = std::string(visible ? "Show" : "Hide") + (both ? ", both ways" : ", one way");
+                if (ImGui::MenuItem(label.c_str()))
+                    state.edit_pvs(pair_edit(uint32_t(camera), uint32_t(region), visible, both));
+            }
     }
-    const bool sees = pvs->visible(uint32_t(camera), uint32_t(region));
-    ImGui::Text("camera's region %d %s region %d", camera, sees ? "sees" : "does not see", region);
-    ImGui::Separator();
-    for (bool visible : {false, true})
-        for (bool both : {false, true}) {
-            const std::string label = std::string(visible ? "Show" : "Hide") + (both ? ", both ways" : ", one way");
-            if (ImGui::MenuItem(label.c_str()))
-                state.edit_pvs(pair_edit(uint32_t(camera), uint32_t(region), visible, both));
-        }
+    if (camera >= 0 && region >= 0) {
+        // Why the camera's region draws (or culls) the clicked one: the Region panel answers.
+        ImGui::Separator();
+        const std::string why = "Why does " + std::to_string(camera) + " see " + std::to_string(region) + "?";
+        if (ImGui::MenuItem(why.c_str()))
+            state.request_explanation(uint32_t(camera), uint32_t(region));
+    }
     ImGui::EndPopup();
 }
 

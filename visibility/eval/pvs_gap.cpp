@@ -43,4 +43,41 @@ PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference)
     return gap;
 }
 
+std::vector<CostlyPair> worst_excess_pairs(const Pvs* pvs, const Pvs& reference, std::span<const uint64_t> region_cost,
+                                           size_t count)
+{
+    const uint32_t regions = reference.region_count(), rows = reference.row_count();
+    if ((pvs && (pvs->region_count() != regions || pvs->row_count() != rows)) || region_cost.size() != regions)
+        throw std::invalid_argument("worst_excess_pairs: the PVS, the reference and the costs disagree on the regions");
+    const size_t words = reference.words_per_row();
+    std::vector<uint64_t> ours(words), theirs(words);
+    if (!pvs)
+        bits::fill(ours, regions);
+    // A heap of the `count` costliest so far, cheapest (then latest) on top.
+    const auto cheaper = [](const CostlyPair& a, const CostlyPair& b) {
+        return a.cost != b.cost ? a.cost > b.cost : std::pair(a.row, a.region) < std::pair(b.row, b.region);
+    };
+    std::vector<CostlyPair> heap;
+    for (uint32_t r = 0; r < rows && count > 0; ++r) {
+        if (pvs)
+            pvs->decode_row(r, ours);
+        reference.decode_row(r, theirs);
+        for (size_t w = 0; w < words; ++w)
+            for (uint64_t m = ours[w] & ~theirs[w]; m; m &= m - 1) {
+                const uint32_t region = uint32_t(w * 64 + size_t(std::countr_zero(m)));
+                const CostlyPair pair{r, region, region_cost[region]};
+                if (heap.size() < count) {
+                    heap.push_back(pair);
+                    std::push_heap(heap.begin(), heap.end(), cheaper);
+                } else if (pair.cost > heap.front().cost) {
+                    std::pop_heap(heap.begin(), heap.end(), cheaper);
+                    heap.back() = pair;
+                    std::push_heap(heap.begin(), heap.end(), cheaper);
+                }
+            }
+    }
+    std::sort(heap.begin(), heap.end(), cheaper);
+    return heap;
+}
+
 } // namespace pvs

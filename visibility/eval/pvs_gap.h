@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <utility>
+#include <span>
 #include <vector>
 
 namespace pvs {
@@ -29,7 +30,19 @@ struct PvsGap {
 };
 
 inline constexpr size_t kListedMissingPairs = 64;
+inline constexpr size_t kListedWorstPairs = 32; // worst_excess_pairs for compare and the inspector
 
 PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference);
+
+// The excess pairs (row, region) that cost the most: the `count` with the largest
+// region_cost[region] (what drawing the region for nothing costs, e.g. its triangles), the
+// largest first, ties in row then region order. region_cost must hold one entry per region;
+// same preconditions as pvs_gap. A null PVS is every region.
+struct CostlyPair {
+    uint32_t row = 0, region = 0;
+    uint64_t cost = 0;
+};
+std::vector<CostlyPair> worst_excess_pairs(const Pvs* pvs, const Pvs& reference, std::span<const uint64_t> region_cost,
+                                           size_t count);
 
 } // namespace pvs
