@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace pvs::app {
@@ -38,7 +39,10 @@ void print_point(const char* label, const glm::dvec3& p) { std::printf("  %-12s 
 
 void print_text(const Zone& zone, const std::string& pvs_name, const PairExplanation& e)
 {
-    std::printf("%s: region %u -> region %u (PVS: %s)\n", zone.source.path.c_str(), e.a, e.b, pvs_name.c_str());
+    if (e.grid)
+        std::printf("%s: view cell %u -> object %u (PVS: %s)\n", zone.source.path.c_str(), e.a, e.b, pvs_name.c_str());
+    else
+        std::printf("%s: region %u -> region %u (PVS: %s)\n", zone.source.path.c_str(), e.a, e.b, pvs_name.c_str());
     std::printf("  %s\n\n", e.summary.c_str());
     std::printf("  in PVS       %s\n", e.has_pvs ? (e.in_pvs ? "yes" : "no") : "no PVS (everything drawn)");
     if (e.witness) {
@@ -54,6 +58,8 @@ void print_text(const Zone& zone, const std::string& pvs_name, const PairExplana
     } else {
         std::printf("  sight line   none found in %llu lines\n", static_cast<unsigned long long>(e.witness_tries));
     }
+    if (e.grid)
+        return; // no portal flow on a grid of cells
     const char* method = e.chain_2d ? "portal-full (2-D)" : "portal-full";
     if (!e.chain) {
         std::printf("  chain        %s %s\n", method, e.flow_holds ? "holds B (no chain recorded)" : "does not hold B");
@@ -86,13 +92,17 @@ int run_why(const WhyCommandOptions& o)
         options.flow.threads = o.threads;
         options.witness_budget = o.budget;
         options.seed = o.seed;
-        ProgressBar bar(stderr, "why: portal-full");
-        options.flow.progress = [&bar](double f) {
-            bar.update(f);
-            return true;
-        };
+        std::optional<ProgressBar> bar; // the portal flow's (a grid zone has none)
+        if (!zone.view_grid) {
+            bar.emplace(stderr, "why: portal-full");
+            options.flow.progress = [&bar](double f) {
+                bar->update(f);
+                return true;
+            };
+        }
         const PairExplanation e = explain_pair(zone, source.pvs, o.a, o.b, options);
-        bar.finish();
+        if (bar)
+            bar->finish();
         if (o.json)
             std::cout << pair_explanation_json(zone.source.path, o.pvs, e).dump(2) << "\n";
         else
@@ -100,7 +110,7 @@ int run_why(const WhyCommandOptions& o)
         return 0;
     } catch (const FileError& e) {
         std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::exception& e) { // a bad region id, a zone it cannot explain on, Embree failing
         std::fprintf(stderr, "pvscope: error: %s\n", e.what());
     }
     return 2;
@@ -114,9 +124,12 @@ void register_why_command(CLI::App& app, int& exit_code)
     CLI::App* cmd = app.add_subcommand(
         "why", "Why region A's PVS row holds region B, or not: the bit, a sight line found for the pair (and a camera "
                "along it), portal-full's chain of portals from A to B, and a verdict (sees, overdraw, would pop)");
-    cmd->add_option("file", o->path, "Zone file (.bsp, .s3d, .wad)")->required();
-    cmd->add_option("a", o->a, "Region A (the viewer), as `info` and the inspector number them")->required();
-    cmd->add_option("b", o->b, "Region B (the one seen or not)")->required();
+    cmd->add_option("file", o->path, "Zone file (.bsp, .s3d, .wad, or an .obj with its .hepvs grid)")->required();
+    cmd->add_option("a", o->a, "Region A (the viewer), as `check` and the inspector number them; an OBJ level: a view cell")
+        ->required();
+    cmd->add_option("b", o->b, "Region B (the one seen or not); an OBJ level: an object")->required();
+    cmd->add_option("--obj", o->load.obj, "A .hepvs's OBJ level (default: the .obj of the same name beside it)");
+    cmd->add_option("--hepvs", o->load.hepvs, "An OBJ's .hepvs PVS (default: the .hepvs of the same name, if any)");
     cmd->add_option("--pvs", o->pvs, "The PVS to explain: file (the file's), or a method baked now (" +
                                          vis_method_names() + ")")
         ->check(CLI::IsMember(pvs_source_names()))

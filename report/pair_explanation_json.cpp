@@ -27,6 +27,7 @@ nlohmann::json pair_explanation_json(const std::string& file, const std::string&
     j["pvs"] = pvs_name;
     j["in_pvs"] = e.in_pvs;
     j["in_reference"] = e.witness.has_value();
+    j["grid"] = e.grid; // a is a view cell, b an object
     j["verdict"] = pair_verdict_name(e.verdict);
     j["summary"] = e.summary;
     j["witness_tries"] = e.witness_tries;

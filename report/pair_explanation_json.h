@@ -1,6 +1,7 @@
 // A pair's explanation (visibility/eval/pair_explanation.h) as JSON, the shape `pvscope why
 // --json` prints. Field names are stable: scripts read them.
-//   { "file", "a", "b", "pvs", "in_pvs", "in_reference", "verdict", "summary",
+//   { "file", "a", "b", "pvs", "grid" (a is a view cell, b an object), "in_pvs", "in_reference",
+//     "verdict", "summary",
 //     "witness": {"from": [x,y,z], "to": [x,y,z], "tries"} | null,
 //     "camera": {"position": [x,y,z], "yaw", "pitch", "argument": "x,y,z,yaw,pitch"} | null,
 //     "witness_tries", "witness_regions": [a, ..., b] (the regions the witness crosses),

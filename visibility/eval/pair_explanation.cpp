@@ -3,6 +3,8 @@
 
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portal_vis_2d.h"
+#include "visibility/reference/grid_witness.h"
+#include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/region_sampler.h"
 #include "visibility/reference/tree_trace.h"
 
@@ -88,6 +90,11 @@ std::string describe(const PairExplanation& e)
     case PairVerdict::Sees:
         return "sees: a sight line joins A and B, and the PVS holds B";
     case PairVerdict::Overdraw:
+        if (e.grid) {
+            std::snprintf(text, sizeof text, "overdraw: the PVS holds the object, but no sight line was found in %llu lines",
+                          tries);
+            return text;
+        }
         std::snprintf(text, sizeof text, "overdraw: the PVS holds B, but no sight line was found in %llu lines; %s",
                       tries, chain_words.c_str());
         return text;
@@ -138,10 +145,43 @@ WitnessCamera camera_looking(const glm::dvec3& from, const glm::dvec3& to)
     return camera;
 }
 
+namespace {
+
+// A grid zone: A is a view cell, B an object; the witness by the mesh, no portal flow.
+PairExplanation explain_grid_pair(const Zone& zone, const Pvs* pvs, uint32_t cell, uint32_t object,
+                                  const ExplainOptions& options)
+{
+    const uint64_t cells = zone.view_grid->cell_count();
+    if (cell >= cells)
+        throw std::invalid_argument("cell " + std::to_string(cell) + " is out of range: " + zone.source.path + " has " +
+                                    std::to_string(cells) + " view cells");
+    if (object >= zone.region_count())
+        throw std::invalid_argument("object " + std::to_string(object) + " is out of range: " + zone.source.path +
+                                    " has " + std::to_string(zone.region_count()) + " objects");
+    PairExplanation e;
+    e.a = cell;
+    e.b = object;
+    e.grid = true;
+    e.has_pvs = pvs != nullptr && cell < pvs->row_count() && object < pvs->region_count();
+    e.in_pvs = !e.has_pvs || pvs->visible(cell, object);
+    const MeshTracer tracer(zone);
+    e.witness = find_grid_sight_line(zone, tracer, cell, object, options.witness_budget, options.seed, &e.witness_tries);
+    if (e.witness)
+        e.camera = camera_looking(e.witness->from, e.witness->to);
+    e.verdict = e.witness ? (e.in_pvs ? PairVerdict::Sees : PairVerdict::WouldPop)
+                          : (e.in_pvs ? PairVerdict::Overdraw : PairVerdict::Hidden);
+    e.summary = describe(e);
+    return e;
+}
+
+} // namespace
+
 PairExplanation explain_pair(const Zone& zone, const Pvs* pvs, uint32_t a, uint32_t b, const ExplainOptions& options)
 {
     const size_t regions = zone.region_count();
-    if (!zone.tree.exists() || zone.view_grid)
+    if (zone.view_grid)
+        return explain_grid_pair(zone, pvs, a, b, options);
+    if (!zone.tree.exists())
         throw std::invalid_argument(zone.source.path + " has no BSP tree of regions to explain a pair on");
     for (const uint32_t r : {a, b})
         if (r >= regions)

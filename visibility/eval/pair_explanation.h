@@ -18,9 +18,13 @@
 //    line was found: the chain says where the flow could not close), WouldPop (a sight line
 //    exists, the PVS lacks B), Hidden (neither), Unexplained (the PVS holds B with no sight line
 //    and no chain of the flow: a bit set by hand or by another tool's looser rule).
-// A == B is Sees whenever the row holds A. Throws std::invalid_argument for a zone without a
-// tree (an OBJ level: cells and objects, not regions) or a region id out of range (the message
-// names it and the count). Library code: no output.
+// A == B is Sees whenever the row holds A.
+// Grid zones (an OBJ level with a .hepvs grid): A is a view cell (a PVS row), B an object; the
+// witness is the mesh reference's (grid_witness.h: an eye in the cell in open space whose ray
+// meets B's front first), and there is no portal flow, so no chain and no Unexplained.
+// Throws std::invalid_argument for a zone with neither a tree nor a grid, or an id out of range
+// (the message names it and the count); std::runtime_error when Embree cannot trace a grid
+// zone's mesh. Library code: no output.
 #pragma once
 
 #include "visibility/methods/vis_method.h"
@@ -59,6 +63,7 @@ struct PairExplanation {
     std::optional<WitnessCamera> camera; // with the witness
     std::optional<FlowChain> chain;
     bool chain_2d = false;   // the chain is the 2-D flow's (widths, not areas)
+    bool grid = false;       // a grid zone: a is a view cell, b an object (no flow, no chain)
     bool flow_holds = false; // the flow's row of A holds B (it then has a chain)
     PortalSet portals;       // the portals the chain's steps index
     // The regions the witness passes through, in order from A to B, and (when the flow lacks a
