@@ -59,6 +59,9 @@ nlohmann::json pair_explanation_json(const std::string& file, const std::string&
         nlohmann::json window = nlohmann::json::array();
         for (const glm::dvec3& p : s.window)
             window.push_back(point_json(p));
+        nlohmann::json planes = nlohmann::json::array();
+        for (const glm::dvec4& plane : s.separator_planes)
+            planes.push_back({plane.x, plane.y, plane.z, plane.w});
         const Portal& portal = e.portals.portals[s.portal];
         steps.push_back({{"region", s.region},
                          {"portal", s.portal},
@@ -67,6 +70,7 @@ nlohmann::json pair_explanation_json(const std::string& file, const std::string&
                          {"window_size", s.window_size},
                          {"window_fraction", s.portal_size > 0 ? s.window_size / s.portal_size : 0.0},
                          {"separators", s.separators},
+                         {"separator_planes", planes},
                          {"window", window}});
     }
     j["portal_chain"] = regions;

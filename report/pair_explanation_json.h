@@ -9,7 +9,9 @@
 //     "chain_method": "portal-full" | "portal-full (2-D)", "flow_holds",
 //     "portal_chain": [a, r1, ..., b] | null,
 //     "chain_steps": [ {"region", "portal", "portal_regions": [front, back], "portal_size",
-//                       "window_size", "window_fraction", "separators", "window": [[x,y,z], ...]} ],
+//                       "window_size", "window_fraction", "separators",
+//                       "separator_planes": [[nx,ny,nz,d], ...] (the window in front of each),
+//                       "window": [[x,y,z], ...]} ],
 //     "size_unit": "area" | "width" }
 // in_reference is "a sight line was found" (the reference's proof for this pair).
 #pragma once

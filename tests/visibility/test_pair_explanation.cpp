@@ -89,6 +89,9 @@ void expect_chain_is_a_walk(const PairExplanation& e)
         EXPECT_TRUE(joins) << "portal " << step.portal << " does not join " << before << " and " << step.region;
         EXPECT_LE(step.window_size, step.portal_size * (1 + 1e-9) + 1e-9);
         EXPECT_GT(step.window_size, 0.0);
+        EXPECT_EQ(step.separator_planes.size(), step.separators);
+        for (const glm::dvec4& plane : step.separator_planes)
+            EXPECT_NEAR(glm::length(glm::dvec3(plane)), 1.0, 1e-9);
         before = step.region;
     }
     EXPECT_EQ(before, e.b);

@@ -35,6 +35,7 @@ struct ViewportPanel {
     uint64_t uploaded_frame = 0;
     bool looking = false;  // right button went down over the picture and is still held
     bool orbiting = false; // middle button went down over the picture on a picked point
+    int32_t selected_before_click = -1; // the region selected before the last Shift + click
 };
 void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_seconds);
 

@@ -145,7 +145,7 @@ void draw_hover(InspectorState& state, const ViewportPanel& panel, ImVec2 origin
 // region).
 constexpr const char* kPairPopup = "Edit PVS pair";
 
-void draw_pair_popup(InspectorState& state)
+void draw_pair_popup(InspectorState& state, int32_t selected_before)
 {
     if (!ImGui::BeginPopup(kPairPopup))
         return;
@@ -165,12 +165,16 @@ void draw_pair_popup(InspectorState& state)
                     state.edit_pvs(pair_edit(uint32_t(camera), uint32_t(region), visible, both));
             }
     }
-    if (camera >= 0 && region >= 0) {
-        // Why the camera's region draws (or culls) the clicked one: the Region panel answers.
+    // Why the camera's region (or the region selected before the click) draws or culls the
+    // clicked one: the Region panel answers.
+    if (region >= 0 && (camera >= 0 || selected_before >= 0))
         ImGui::Separator();
-        const std::string why = "Why does " + std::to_string(camera) + " see " + std::to_string(region) + "?";
+    for (const int32_t from : {camera, selected_before == camera ? -1 : selected_before}) {
+        if (from < 0 || region < 0)
+            continue;
+        const std::string why = "Why does " + std::to_string(from) + " see " + std::to_string(region) + "?";
         if (ImGui::MenuItem(why.c_str()))
-            state.request_explanation(uint32_t(camera), uint32_t(region));
+            state.request_explanation(uint32_t(from), uint32_t(region));
     }
     ImGui::EndPopup();
 }
@@ -243,11 +247,12 @@ void draw_viewport_panel(InspectorState& state, ViewportPanel& panel, float dt_s
         panel.looking = true;
     if (ImGui::IsItemClicked(ImGuiMouseButton_Left)) {
         const float x = io.MousePos.x - origin.x, y = io.MousePos.y - origin.y;
+        panel.selected_before_click = state.selection().region;
         if (x >= 0.0f && y >= 0.0f && state.pick(uint32_t(x), uint32_t(y)) && io.KeyShift &&
             state.selection().region >= 0 && state.last_cull().region >= 0)
             ImGui::OpenPopup(kPairPopup);
     }
-    draw_pair_popup(state);
+    draw_pair_popup(state, panel.selected_before_click);
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Right))
         panel.looking = false;
     ImGui::End();

@@ -54,7 +54,11 @@ void FlowWorker::record_chain(uint32_t leaf, uint32_t entry)
         step.window_size = winding_area(seen);
         step.window.assign(seen.points, seen.points + seen.count);
         if (k >= 3)
-            step.separators = frames_[k - 1]->separators[0].count + frames_[k - 1]->separators[1].count;
+            for (const SeparatorCache& cache : frames_[k - 1]->separators) {
+                step.separators += cache.count;
+                for (uint32_t i = 0; i < cache.count; ++i)
+                    step.separator_planes.emplace_back(cache.planes[i].normal, cache.planes[i].dist);
+            }
         chain.steps.push_back(std::move(step));
     }
     probe_->found[head_portal_] = std::move(chain);

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <optional>
 #include <vector>
 
@@ -26,7 +27,10 @@ struct ChainStep {
     double window_size = 0;  // the part of it the flow still saw through (same unit); the first
                              // two steps see the whole portal, the flow clips from the third on
     uint32_t separators = 0; // separating planes the flow clipped this step's window by (3-D:
-                             // tests 0 and 1 of the frame before; 2-D: the two separating lines)
+                             // tests 0 and 1 of the frame before; 2-D: 0)
+    // Those planes (3-D), each (normal, distance) with the window on its front: the ones the
+    // window was clipped by and survived, so the ones that "kept it open".
+    std::vector<glm::dvec4> separator_planes;
     std::vector<glm::dvec3> window; // that part's points (3-D: a polygon; 2-D: a segment at z 0)
 };
 
