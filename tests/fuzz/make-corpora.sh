@@ -9,9 +9,19 @@
 #  - Freedoom (Debian's freedoom package) with GL nodes made by glbsp (V2, V3, V5 .gwa) and
 #    zdbsp (V2, V5 in the WAD): a few maps each as small PWADs, and a textures WAD;
 #  - the small hand-written seeds in tests/fuzz/seeds/<target>/.
-# Missing sources are skipped with a message; the generated zones are always there.
+# Missing sources are skipped with a message (the generated zones are always there), except
+# under PVSCOPE_REQUIRE_SHARED_DATA=1 (CI), where a missing source fails: the targets whose
+# seeds come only from it would otherwise run on empty corpora.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
+require=${PVSCOPE_REQUIRE_SHARED_DATA:-0}
+missing() { # missing MESSAGE: skip a source, or fail when sources are required
+    if [ "$require" = 1 ]; then
+        echo "make-corpora: $1 (PVSCOPE_REQUIRE_SHARED_DATA=1: failing)" >&2
+        exit 1
+    fi
+    echo "make-corpora: $1"
+}
 build=${1:?usage: make-corpora.sh BUILD_DIR [OUT]}
 out=${2:-$build/corpora}
 seeds=$build/tests/fuzz/fuzz_make_seeds
@@ -43,7 +53,7 @@ if [ -d "$shared" ]; then
     copy obj "$shared/hateengine/E1M1.obj"
     copy hepvs "$shared/hateengine/E1M1.hepvs"
 else
-    echo "make-corpora: $shared absent: no Quake or HateEngine seeds"
+    missing "$shared absent: no Quake or HateEngine seeds"
 fi
 
 iwad=$doom/freedoom1.wad
@@ -64,7 +74,7 @@ if [ -f "$iwad" ] && command -v glbsp >/dev/null && command -v zdbsp >/dev/null;
         done
     done
 else
-    echo "make-corpora: Freedoom, glbsp or zdbsp missing: no Doom seeds"
+    missing "Freedoom, glbsp or zdbsp missing: no Doom seeds"
 fi
 
 for dir in "$root"/tests/fuzz/seeds/*/; do

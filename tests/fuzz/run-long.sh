@@ -5,7 +5,8 @@
 # crash inputs in BUILD/fuzz-artifacts/<name>/. Build the targets first (run-smoke.sh does).
 #   tests/fuzz/run-long.sh SECONDS [TARGET...]
 # PVSCOPE_FUZZ_BUILD_DIR (default build-fuzz), PVSCOPE_FUZZ_PARALLEL (default 2),
-# PVSCOPE_FUZZ_RUNS (also stop a target after this many executions: the issue's bar is 10 M or an hour).
+# PVSCOPE_FUZZ_RUNS (also stop a target after this many executions: 10 M or an hour is the bar).
+# Exits 1 when any target had a finding (listed at the end), 0 when none did.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 cd "$root"
@@ -15,6 +16,9 @@ build=${PVSCOPE_FUZZ_BUILD_DIR:-build-fuzz}
 parallel=${PVSCOPE_FUZZ_PARALLEL:-2}
 targets=${*:-$(cat "$build/tests/fuzz/targets.txt")}
 . tests/fuzz/target-options.sh
+mkdir -p "$build/fuzz-logs"
+findings=$build/fuzz-logs/findings.txt
+: >"$findings"
 
 run_one() {
     local target=$1 name=${1#fuzz_}
@@ -29,7 +33,8 @@ run_one() {
         -max_len="$(fuzz_max_len_for "$target")" \
         -print_final_stats=1 "${dict_arg[@]}" "${runs_arg[@]}" -artifact_prefix="$build/fuzz-artifacts/$name/" \
         "$corpus" "$build/corpora/$name" \
-        >"$build/fuzz-logs/$name.log" 2>&1 && echo "run-long: $target done" || echo "run-long: $target FINDING"
+        >"$build/fuzz-logs/$name.log" 2>&1 && echo "run-long: $target done" ||
+        { echo "run-long: $target FINDING"; echo "$target" >>"$findings"; }
 }
 
 running=0
@@ -42,3 +47,8 @@ for target in $targets; do
     fi
 done
 wait
+if [ -s "$findings" ]; then
+    echo "run-long: findings in $(tr '\n' ' ' <"$findings")(logs in $build/fuzz-logs, inputs in $build/fuzz-artifacts)" >&2
+    exit 1
+fi
+echo "run-long: every target ran without a finding"

@@ -12,7 +12,7 @@ namespace pvs::test {
 
 std::string shared_data_dir()
 {
-    if (const char* env = std::getenv("PVSCOPE_SHARED_DATA"))
+    if (const char* env = std::getenv("PVSCOPE_SHARED_DATA_DIR"))
         return env;
     return PVSCOPE_SHARED_DATA_DIR;
 }
