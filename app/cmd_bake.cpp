@@ -1,6 +1,7 @@
 #include "app/cmd_bake.h"
 
 #include "app/arguments.h"
+#include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "visibility/bit_row.h"
@@ -39,8 +40,6 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
-#include <malloc.h>
-#include <sys/resource.h>
 
 namespace pvs::app {
 
@@ -81,14 +80,6 @@ std::string format_extension(const Input& in)
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The whole process's peak resident set so far (Linux reports ru_maxrss in KiB).
-size_t peak_rss_bytes()
-{
-    rusage usage{};
-    getrusage(RUSAGE_SELF, &usage);
-    return size_t(usage.ru_maxrss) * 1024;
 }
 
 std::string lowercase_extension(const std::string& path)
@@ -211,15 +202,8 @@ void drop_what_a_portal_bake_does_not_read(Input& in)
         material.pixels = {};
     in.drawing_dropped = true;
     // Freed pages in the middle of the heap stay resident: give them back now.
-    malloc_trim(0);
+    return_freed_memory();
 }
-
-// glibc gives each thread that allocates an arena of its own, whose pages are touched apart
-// from the main heap's: with the bake's workers that was 1-3 MB more at the peak on e1m1
-// (14.6-17.0 MB against 13.7-13.8 MB with one arena, varying with which thread built which
-// passage rows). The portal bake allocates per portal, not per element, so the threads do not
-// contend for one arena (no slower in the same runs).
-void use_one_malloc_arena() { mallopt(M_ARENA_MAX, 1); }
 
 // --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
 // the zone's regions. A PRT2 / PRT1-AM file's portals name its clusters.
@@ -608,7 +592,6 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
     if (uses_registry(o) || in.format == InputFormat::DoomWad)
         return run_registry_method(o, in, load_seconds, err, cancel);
     drop_what_a_portal_bake_does_not_read(in);
-    use_one_malloc_arena();
     BakeRun run;
     find_portals(o, in.zone, run, err);
     choose_clusters(o, in, run, err);

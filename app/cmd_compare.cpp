@@ -1,6 +1,7 @@
 #include "app/cmd_compare.h"
 
 #include "app/arguments.h"
+#include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "app/zone_load_args.h"
@@ -129,6 +130,7 @@ int run_checked(const CompareCommandOptions& o, std::FILE* out, std::FILE* err)
     options.height = (*size)[1];
     options.sky = sky_mode_from_name(o.sky);
     options.threads = o.threads;
+    options.memory_probe = peak_memory_probe();
     const Zone zone = load_zone(o.input, o.load);
     StagedProgress progress(err, &SigintScope::interrupted());
     options.progress = std::ref(progress);

@@ -3,6 +3,7 @@
 // command line, with the same options (cmd_inspect.h), and shows the same help.
 #include "app/arguments.h"
 #include "app/cmd_inspect.h"
+#include "app/process_memory.h"
 #include "ui/gui/inspector_app.h"
 
 #include <CLI/CLI.hpp>
@@ -32,6 +33,7 @@ pvs::gui::InspectorOptions inspector_options(const pvs::app::InspectArguments& a
                                                                 : ui::HiddenLines::Faint;
     options.pick_centre = a.pick_centre;
     options.bsp_node = a.bsp_node;
+    options.memory_probe = app::peak_memory_probe();
     if (!a.why.empty()) {
         const size_t comma = a.why.find(',');
         options.why = std::array<uint32_t, 2>{uint32_t(std::stoul(a.why.substr(0, comma))),

@@ -11,6 +11,7 @@
 #include "app/cmd_info.h"
 #include "app/cmd_inspect.h"
 #include "app/inspector_launch.h"
+#include "app/process_memory.h"
 #include "app/cmd_render.h"
 #include "app/cmd_stats.h"
 #include "app/cmd_vis.h"
@@ -42,6 +43,15 @@ int main(int argc, char** argv)
     // The inspector is another executable (inspector_launch.h): checked here, opened there.
     pvs::app::register_inspect_command(app, exit_code,
                                        [argv](const pvs::app::InspectArguments&) { return pvs::app::launch_inspector(argv); });
+    // Process-wide heap tuning lives here, not in the libraries (process_memory.h): one malloc
+    // arena unless asked otherwise; the option, when given, changes it as it is parsed, before
+    // any subcommand runs.
+    pvs::app::use_malloc_arenas(1);
+    app.add_option_function<int>(
+           "--malloc-arenas", [](const int& arenas) { pvs::app::use_malloc_arenas(arenas); },
+           "glibc malloc arenas for the whole run (default 1: the bakes' threads then touch no heap pages of "
+           "their own; 0: glibc's own limit). Give it before the subcommand")
+        ->check(CLI::Range(0, 1024));
     std::string zone_path; // `pvscope FILE`: the inspector on FILE
     app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");
 

@@ -5,8 +5,6 @@
 #include "visibility/eval/pvs_gap.h"
 
 #include <chrono>
-#include <fstream>
-#include <malloc.h>
 #include <stdexcept>
 #include <sys/resource.h>
 
@@ -22,36 +20,19 @@ double cpu_seconds()
     return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-// A field of /proc/self/status in KiB ("VmRSS", "VmHWM"); -1 when it cannot be read.
-double status_kib(const std::string& field)
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.rfind(field + ":", 0) == 0)
-            return std::stod(line.substr(field.size() + 1));
-    return -1.0;
-}
-
-// Measures the rise of the process's peak RSS over a bake: resets the peak (clear_refs "5") to the
-// current RSS first. valid() is false where Linux does not allow it.
+// The peak memory of one bake through the caller's probe, if any (CompareOptions::memory_probe).
 class PeakMemory {
 public:
-    PeakMemory()
+    explicit PeakMemory(const std::optional<PeakMemoryProbe>& probe) : probe_(probe)
     {
-        malloc_trim(0); // give back what the previous bake freed, so the RSS before is this bake's floor
-        std::ofstream clear("/proc/self/clear_refs");
-        clear << "5";
-        clear.flush();
-        reset_ = bool(clear);
-        before_kib_ = status_kib("VmRSS");
+        if (probe_ && probe_->begin)
+            probe_->begin();
     }
-    bool valid() const { return reset_ && before_kib_ >= 0.0; }
-    double rise_mib() const { return std::max(0.0, status_kib("VmHWM") - before_kib_) / 1024.0; }
+    // The rise in MiB, or a negative value when there is no probe or it cannot tell.
+    double rise_mib() const { return probe_ && probe_->rise_mib ? probe_->rise_mib() : -1.0; }
 
 private:
-    bool reset_ = false;
-    double before_kib_ = -1.0;
+    const std::optional<PeakMemoryProbe>& probe_;
 };
 
 // Level 0 (no separating planes) is left out: its flow explodes on real levels (e1m1: more than
@@ -96,7 +77,8 @@ CompareRow measured_row(const VisMethod& method, const MethodSettings& settings,
     row.wall_s = run.seconds;
     row.cpu_s = method.bakes ? cpu_s : 0.0;
     row.estimate_mib = double(run.peak_bytes_estimate) / (1024.0 * 1024.0);
-    row.peak_mib = !method.bakes ? 0.0 : memory.valid() ? memory.rise_mib() : row.estimate_mib;
+    const double measured = method.bakes ? memory.rise_mib() : -1.0;
+    row.peak_mib = !method.bakes ? 0.0 : measured >= 0.0 ? measured : row.estimate_mib;
     row.summary = run.summary;
     row.pvs_bytes = run.pvs ? run.pvs->memory_bytes() : 0;
     row.pvs = std::move(run.pvs);
@@ -110,7 +92,7 @@ CompareRow run_entry(const Zone& zone, const CompareEntry& entry, const CompareO
     MethodSettings settings = entry.settings;
     const std::string stage = std::string(method.name) + " " + method.label(settings);
     settings.progress = [&](double fraction) { return !o.progress || o.progress(stage, fraction); };
-    const PeakMemory memory;
+    const PeakMemory memory(o.memory_probe);
     const double cpu_before = cpu_seconds();
     MethodRun run = method.run(zone, settings);
     cancelled = run.cancelled;
@@ -124,7 +106,7 @@ std::vector<CompareRow> run_reference(const Zone& zone, const CompareOptions& o,
     MethodSettings settings = base_settings(o);
     settings.progress = [&](double fraction) { return !o.progress || o.progress("reference", fraction); };
     std::vector<CompareRow> rounds;
-    const PeakMemory memory;
+    const PeakMemory memory(o.memory_probe);
     const double cpu_before = cpu_seconds();
     settings.on_reference_round = [&](const ReferenceRound& round, const Pvs& rows) {
         MethodSettings at = settings;

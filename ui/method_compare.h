@@ -14,7 +14,7 @@
 // clustered expand to their variants (levels 1-4; level 4 without passages, without target checks;
 // level 0, without separators, takes over 12 minutes on e1m1 and is left out).
 //
-// Memory: where Linux allows it (/proc/self/clear_refs), the process's peak RSS is reset before
+// Memory: with CompareOptions::memory_probe (where Linux allows it), the process's peak RSS is reset before
 // each bake and peak_mib is how far it rose above the RSS before the bake; elsewhere the
 // baker's own estimate (estimate_mib, always reported). CPU seconds are the process's user+system
 // time during the bake (nothing else runs then).
@@ -37,6 +37,15 @@ struct CompareEntry {
     MethodSettings settings;
 };
 
+// Measures the process's peak memory over one bake: begin() before it, rise_mib() after it (a
+// negative value: it cannot). It touches process-wide state (the heap, the kernel's peak-RSS mark), so
+// the process supplies it (app/process_memory.h); without one, a row's peak_mib is the baker's
+// own estimate.
+struct PeakMemoryProbe {
+    std::function<void()> begin;
+    std::function<double()> rise_mib;
+};
+
 struct CompareOptions {
     std::vector<std::string> methods;   // registry names other than reference; empty: all of them
                                         // (on a zone without a tree: all that need none)
@@ -48,6 +57,7 @@ struct CompareOptions {
     unsigned threads = 0;
     // Called with what runs now ("portal-full level=2 ...", "walk") and its fraction; false cancels.
     std::function<bool(const std::string& stage, double fraction)> progress;
+    std::optional<PeakMemoryProbe> memory_probe; // none: the bakers' estimates (above)
 };
 
 struct CompareRow {

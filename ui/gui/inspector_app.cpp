@@ -276,6 +276,7 @@ int run_inspector(const InspectorOptions& options)
     }
     state.cull_mode = options.cull_mode;
     state.overlays = options.overlays;
+    state.set_memory_probe(options.memory_probe);
     if (options.bake)
         state.start_bake(*options.bake);
     if (options.compare) {

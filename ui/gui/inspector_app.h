@@ -7,6 +7,7 @@
 #pragma once
 
 #include "ui/gui/bake_job.h"
+#include "ui/method_compare.h"
 #include "ui/zone_overlays.h"
 #include "visibility/culler.h"
 
@@ -47,6 +48,8 @@ struct InspectorOptions {
     // Explain this pair (A, B) at start (InspectorState::request_explanation), region A selected;
     // scripted runs count their frames only once the explanation is done.
     std::optional<std::array<uint32_t, 2>> why;
+    // The process's peak-memory probe for the Compare panel (app/process_memory.h), or none.
+    std::optional<ui::PeakMemoryProbe> memory_probe;
 };
 
 // Opens the window and runs until it is closed or the screenshot is written. Returns the

@@ -206,6 +206,9 @@ public:
     // PVS, "none", switches to None). False when there is no such row.
     CompareJob& compare_job() { return compare_; }
     const CompareJob& compare_job() const { return compare_; }
+    // The process's peak-memory probe for the compares started here (the application supplies it:
+    // it touches process-wide state; without one the Compare rows show the bakers' estimates).
+    void set_memory_probe(std::optional<ui::PeakMemoryProbe> probe) { memory_probe_ = std::move(probe); }
     bool start_compare(const ui::CompareOptions& options);
     bool use_compared_pvs(size_t row);
     const std::string& baked_label() const { return baked_label_; }
@@ -353,6 +356,7 @@ private:
     std::vector<std::string> case_missing_; // its truth's pairs the baked PVS lacks
     std::string baked_label_; // what the "baked" source holds: "portal-full level=4 ...", a compare row
     CompareJob compare_;
+    std::optional<ui::PeakMemoryProbe> memory_probe_;
     VisReport baked_report_;
     uint64_t pvs_generation_ = 0;
     std::optional<PairExplanation> explanation_;

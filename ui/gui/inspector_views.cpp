@@ -256,7 +256,12 @@ bool InspectorState::start_bake(const BakeRequest& request)
 
 bool InspectorState::start_compare(const ui::CompareOptions& options)
 {
-    return zone_ && compare_.start(*zone_, options);
+    if (!zone_)
+        return false;
+    ui::CompareOptions with_probe = options;
+    if (!with_probe.memory_probe)
+        with_probe.memory_probe = memory_probe_;
+    return compare_.start(*zone_, with_probe);
 }
 
 bool InspectorState::use_compared_pvs(size_t row)
