@@ -1,6 +1,7 @@
 #include "app/cmd_bake.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
@@ -664,6 +665,7 @@ void register_bake_command(CLI::App& app, int& exit_code)
         ->check(CLI::Range(0, 4))
         ->capture_default_str();
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores); the result does not depend on it")
+        ->check(threads_validator())
         ->capture_default_str();
     cmd->add_option("--sky", o->sky, "Portals at sky leaves when built from the tree: sky-to-sky (ericw's default), "
                                      "all (-transsky), none (as id's shipped maps)")

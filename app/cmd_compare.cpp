@@ -1,6 +1,7 @@
 #include "app/cmd_compare.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
@@ -179,7 +180,8 @@ void register_compare_command(CLI::App& app, int& exit_code)
     cmd->add_option("--sky", o->sky, "Portals and sight lines at sky leaves: sky-to-sky, all, none")
         ->check(CLI::IsMember({"sky-to-sky", "all", "none"}))
         ->capture_default_str();
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(threads_validator())
+        ->capture_default_str();
     cmd->add_option("--csv", o->csv, "Write one CSV row per method and parameter");
     cmd->add_option("--json", o->json, "Write the results as JSON");
     cmd->add_option("--chart", o->chart, "Write the speed-vs-accuracy chart (.png, or .svg)");

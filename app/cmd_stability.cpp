@@ -1,6 +1,7 @@
 #include "app/cmd_stability.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "app/zone_load_args.h"
@@ -214,7 +215,8 @@ void register_stability_command(CLI::App& app, int& exit_code)
     cmd->add_option("--sky", o->sky, "Portals and sight lines at sky leaves: sky-to-sky, all, none")
         ->check(CLI::IsMember({"sky-to-sky", "all", "none"}))
         ->capture_default_str();
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(threads_validator())
+        ->capture_default_str();
     cmd->add_option("--json", o->json, "Write the rows as JSON");
     cmd->add_option("--csv", o->csv, "Write the rows as CSV");
     cmd->callback([o, &exit_code] {

@@ -1,5 +1,6 @@
 #include "app/cmd_vis.h"
 
+#include "app/cli_validators.h"
 #include "app/cmd_bake.h"
 #include "app/sigint_scope.h"
 #include "visibility/file_error.h"
@@ -165,7 +166,7 @@ void register_vis_command(CLI::App& app, int& exit_code)
         "vis", "Quake's vis as a drop-in: MAP.prt -> PVS and ambient sounds, written into MAP.bsp in place (BSP 29, "
                "BSP2, 2PSB); ericw's options with one dash or two. Ctrl-C leaves the map as it was");
     cmd->add_option("map", o->map, "The map (MAP or MAP.bsp); its .prt is read from beside it")->required();
-    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(CLI::Range(0u, 1024u))->capture_default_str();
+    cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(threads_validator())->capture_default_str();
     cmd->add_flag("--fast", o->fast, "Base vis only (portal-fast): quick and loose, as vis -fast");
     cmd->add_option("--level", o->level, "Separator test level of the full flow, 0..4")
         ->check(CLI::Range(0, 4))

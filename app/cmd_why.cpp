@@ -1,6 +1,8 @@
 #include "app/cmd_why.h"
 
 #include "app/arguments.h"
+#include "app/cli_validators.h"
+#include "app/cli_validators.h"
 #include "app/progress_bar.h"
 #include "app/pvs_source.h"
 #include "app/zone_load_args.h"
@@ -144,7 +146,7 @@ void register_why_command(CLI::App& app, int& exit_code)
         ->capture_default_str();
     cmd->add_flag("--heights", o->heights, "Doom: floors and ceilings block sight (the 3-D flow), as bake --heights");
     cmd->add_option("--threads", o->threads, "Worker threads of the flow (0 = all cores)")
-        ->check(CLI::Range(0u, 1024u))
+        ->check(threads_validator())
         ->capture_default_str();
     cmd->add_option("--sky", o->sky, "Portals and sight lines at sky leaves: sky-to-sky, all, none")
         ->check(CLI::IsMember({"sky-to-sky", "all", "none"}))

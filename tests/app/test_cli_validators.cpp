@@ -46,5 +46,27 @@ TEST(CliValidators, BadValuesAreRefusedWithWhatWasExpected)
     }
 }
 
+// --threads: 0 (all cores) to 1024 pass; a typo of a million is refused before anything runs (a
+// million threads asked of the raster baker once aborted the process).
+TEST(CliValidators, ThreadCountsInRangeOnly)
+{
+    const auto parse_threads = [](const std::string& value) {
+        CLI::App app{"test"};
+        unsigned threads = 0;
+        app.add_option("--threads", threads)->check(threads_validator());
+        try {
+            app.parse(std::vector<std::string>{value, "--threads"});
+            return std::string();
+        } catch (const CLI::ParseError& e) {
+            return std::string(e.what());
+        }
+    };
+    EXPECT_EQ(parse_threads("0"), "");
+    EXPECT_EQ(parse_threads("1024"), "");
+    EXPECT_NE(parse_threads("1025"), "");
+    EXPECT_NE(parse_threads("1000000").find("not in range"), std::string::npos) << parse_threads("1000000");
+}
+
 } // namespace
+
 } // namespace pvs::app
