@@ -55,13 +55,7 @@ Pvs find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& o
     ChainProbe probe;
     probe.from = a;
     probe.to = b;
-    VisParams params;
-    params.level = options.flow.level;
-    params.threads = options.flow.threads;
-    params.target_checks = options.flow.target_checks;
-    if (!options.flow.passages)
-        params.passage_budget_bytes = 0;
-    params.progress = options.flow.progress;
+    VisParams params = method_vis_params(options.flow, VisParams::Method::Full); // as the registry's portal-full
     params.probe = &probe;
     const uint32_t regions = uint32_t(zone.region_count());
     const Pvs flow = e.chain_2d ? bake_portal_vis_2d(e.portals, regions, params) : bake_portal_vis(e.portals, regions, params);

@@ -291,6 +291,11 @@ std::span<const VisMethod> vis_methods() { return kMethods; }
 
 PortalSet method_portals(const Zone& zone, const MethodSettings& settings) { return zone_portals(zone, settings); }
 
+VisParams method_vis_params(const MethodSettings& settings, VisParams::Method method)
+{
+    return vis_params(settings, method);
+}
+
 bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings) { return uses_2d_vis(zone, settings.heights); }
 
 const VisMethod* find_vis_method(std::string_view name)

@@ -101,6 +101,8 @@ Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights
 // from 2-D without `heights`: its column portals), and whether they go to the 2-D baker
 // (bake_portal_vis_2d) rather than bake_portal_vis. Throws as those methods do (no tree).
 PortalSet method_portals(const Zone& zone, const MethodSettings& settings);
+// The VisParams portal-fast / portal-full bake with for these settings.
+VisParams method_vis_params(const MethodSettings& settings, VisParams::Method method);
 bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings);
 
 // nullptr when no method has that name.
