@@ -8,6 +8,7 @@ packages=(
   libglm-dev zlib1g-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libirrlicht-dev libglfw3-dev libimgui-dev libsquish-dev libtinyobjloader-dev libembree-dev
+  libcairo2-dev
   libgl-dev xvfb xauth libgl1-mesa-dri
   freedoom glbsp zdbsp
   # The fuzz smoke (tests/fuzz/run-smoke.sh): clang 14 and its compiler-rt, which holds

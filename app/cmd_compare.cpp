@@ -6,9 +6,8 @@
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "app/zone_load_args.h"
-#include "ui/chart/chart_png.h"
+#include "ui/chart/chart_file.h"
 #include "ui/chart/compare_points.h"
-#include "ui/chart/svg_canvas.h"
 #include "ui/method_compare.h"
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
@@ -86,12 +85,7 @@ void write_chart(const std::string& path, const std::string& title, const ui::Co
 {
     const std::vector<ui::chart::ChartPoint> points = ui::chart::compare_chart_points(result);
     constexpr uint32_t kWidth = 1200, kHeight = 560;
-    if (std::filesystem::path(path).extension() == ".svg") {
-        ui::chart::SvgCanvas svg(kWidth, kHeight);
-        ui::chart::draw_speed_accuracy_chart(points, title, svg, {0, 0}, {float(kWidth), float(kHeight)});
-        write_text_file(path, svg.svg());
-    } else
-        ui::chart::write_chart_png(points, title, kWidth, kHeight, path);
+    ui::chart::write_chart_file(points, title, kWidth, kHeight, path);
 }
 
 void print_table(std::FILE* out, const ui::CompareResult& result)
@@ -184,7 +178,17 @@ void register_compare_command(CLI::App& app, int& exit_code)
         ->capture_default_str();
     cmd->add_option("--csv", o->csv, "Write one CSV row per method and parameter");
     cmd->add_option("--json", o->json, "Write the results as JSON");
-    cmd->add_option("--chart", o->chart, "Write the speed-vs-accuracy chart (.png, or .svg)");
+    cmd->add_option("--chart", o->chart, "Write the speed-vs-accuracy chart: .png, .svg or .pdf, by the extension")
+        ->check(CLI::Validator(
+            [](std::string& path) {
+                try {
+                    ui::chart::chart_format_for(path);
+                } catch (const std::invalid_argument& e) {
+                    return std::string(e.what());
+                }
+                return std::string();
+            },
+            "PATH.png|.svg|.pdf"));
     cmd->callback([o, &exit_code] {
         const SigintScope sigint;
         exit_code = run_compare_command(*o);

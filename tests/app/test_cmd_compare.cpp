@@ -1,5 +1,5 @@
 // `pvscope compare` as a user runs it: a generated .s3d zone in, the table on stdout, CSV with the
-// documented columns, JSON, the chart as PNG and SVG; bad arguments refused with exit code 2. The
+// documented columns, JSON, the chart as PNG, SVG and PDF; bad arguments refused with exit code 2. The
 // outputs are read back and hold what the engine tests hold: conservative rows miss nothing and
 // pop nowhere, the reference's rows have no excess, CSV and JSON agree, and on e1m1 the file's
 // row has the known mean visible of its WVis PVS.
@@ -120,6 +120,10 @@ TEST_F(CompareCommand, WritesTableCsvJsonAndCharts)
     o.methods = "none";
     ASSERT_EQ(compare(o), 0) << err_;
     EXPECT_NE(read_text(o.chart).find("</svg>"), std::string::npos);
+
+    o.chart = path("c.pdf");
+    ASSERT_EQ(compare(o), 0) << err_;
+    EXPECT_EQ(read_text(o.chart).rfind("%PDF-", 0), 0u);
 }
 
 // A shared level: the file's row is its own PVS, whose mean visible is known (142.0 on e1m1,

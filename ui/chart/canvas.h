@@ -1,6 +1,6 @@
 // What the chart draws on: lines, filled circles, rectangles and text in pixel coordinates
-// (y down). Three implementations: SVG text (svg_canvas.h), an ImGui draw list (imgui_canvas.h:
-// the inspector's panel, and the PNG, rasterised from the same draw list by chart_png.h).
+// (y down). Two implementations: cairo (cairo_canvas.h: the command line's PNG, SVG and PDF) and
+// an ImGui draw list (ui/gui/chart_imgui_canvas.h: the inspector's Compare panel).
 #pragma once
 
 #include <glm/vec2.hpp>

@@ -2,7 +2,7 @@
 // its speed-vs-accuracy chart drawn by the same module as the CLI's PNG (ui/chart/), and a click
 // on a point (or a row of the table) culls with that method's PVS (InspectorState::use_compared_pvs).
 #include "ui/chart/compare_points.h"
-#include "ui/chart/imgui_canvas.h"
+#include "ui/gui/chart_imgui_canvas.h"
 #include "ui/chart/speed_accuracy_chart.h"
 #include "ui/gui/panels.h"
 

@@ -1,4 +1,4 @@
-#include "ui/chart/imgui_canvas.h"
+#include "ui/gui/chart_imgui_canvas.h"
 
 #include <cfloat>
 #include <cmath>

@@ -1,5 +1,7 @@
-// A chart canvas (canvas.h) drawing into a Dear ImGui draw list: the inspector's Compare panel
-// draws the chart into its window with it, and chart_png.h into a headless context's list.
+// A chart canvas (ui/chart/canvas.h) drawing into a Dear ImGui draw list: the inspector's Compare
+// panel draws the speed-vs-accuracy chart into its window with it. The command line draws the same
+// chart with cairo (ui/chart/chart_file.h); this canvas lives with the GUI so that only the
+// inspector links ImGui.
 #pragma once
 
 #include "ui/chart/canvas.h"

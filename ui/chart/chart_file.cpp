@@ -1,0 +1,121 @@
+#include "ui/chart/chart_file.h"
+
+#include "ui/chart/cairo_canvas.h"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+namespace pvs::ui::chart {
+
+namespace {
+
+struct SurfaceDeleter {
+    void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
+};
+struct ContextDeleter {
+    void operator()(cairo_t* context) const { cairo_destroy(context); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+
+// Draws the chart on a white page; the context is finished (every drawing error surfaces in its
+// status) on return.
+void draw_page(cairo_surface_t* surface, std::span<const ChartPoint> points, const std::string& title, uint32_t width,
+               uint32_t height, const std::string& what)
+{
+    ContextPtr context(cairo_create(surface));
+    cairo_set_source_rgb(context.get(), 1, 1, 1);
+    cairo_paint(context.get());
+    CairoCanvas canvas(context.get());
+    draw_speed_accuracy_chart(points, title, canvas, {0, 0}, {float(width), float(height)});
+    if (const cairo_status_t status = cairo_status(context.get()); status != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(what + ": drawing the chart failed: " + cairo_status_to_string(status));
+}
+
+void check_surface(cairo_surface_t* surface, const std::string& path)
+{
+    if (const cairo_status_t status = cairo_surface_status(surface); status != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(path + ": cannot write the chart: " + cairo_status_to_string(status));
+}
+
+void check_size(uint32_t width, uint32_t height)
+{
+    constexpr uint32_t kMaxSide = 16384; // cairo's image surfaces stop at 32767; a chart needs far less
+    if (width == 0 || height == 0 || width > kMaxSide || height > kMaxSide)
+        throw std::invalid_argument("chart size " + std::to_string(width) + "x" + std::to_string(height) +
+                                    " is outside 1..16384 pixels a side");
+}
+
+} // namespace
+
+ChartFormat chart_format_for(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".png")
+        return ChartFormat::Png;
+    if (extension == ".svg")
+        return ChartFormat::Svg;
+    if (extension == ".pdf")
+        return ChartFormat::Pdf;
+    throw std::invalid_argument(path + ": a chart is written as .png, .svg or .pdf (chosen by the extension)");
+}
+
+Image render_chart_image(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height)
+{
+    check_size(width, height);
+    SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, int(width), int(height)));
+    check_surface(surface.get(), "chart image");
+    draw_page(surface.get(), points, title, width, height, "chart image");
+    cairo_surface_flush(surface.get());
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgba.resize(size_t(width) * height * 4);
+    const unsigned char* data = cairo_image_surface_get_data(surface.get());
+    const size_t stride = size_t(cairo_image_surface_get_stride(surface.get()));
+    for (uint32_t y = 0; y < height; ++y) {
+        // RGB24 is one native-endian 32-bit word per pixel, 0xXXRRGGBB.
+        const auto* row = reinterpret_cast<const uint32_t*>(data + y * stride);
+        uint8_t* out = image.rgba.data() + size_t(y) * width * 4;
+        for (uint32_t x = 0; x < width; ++x) {
+            out[x * 4 + 0] = uint8_t(row[x] >> 16);
+            out[x * 4 + 1] = uint8_t(row[x] >> 8);
+            out[x * 4 + 2] = uint8_t(row[x]);
+            out[x * 4 + 3] = 255;
+        }
+    }
+    return image;
+}
+
+void write_chart_file(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height,
+                      const std::string& path)
+{
+    switch (chart_format_for(path)) {
+    case ChartFormat::Png:
+        save_png(render_chart_image(points, title, width, height), path);
+        return;
+    case ChartFormat::Svg:
+    case ChartFormat::Pdf: {
+        check_size(width, height);
+        const bool svg = chart_format_for(path) == ChartFormat::Svg;
+        SurfacePtr surface(svg ? cairo_svg_surface_create(path.c_str(), width, height)
+                               : cairo_pdf_surface_create(path.c_str(), width, height));
+        check_surface(surface.get(), path);
+        draw_page(surface.get(), points, title, width, height, path);
+        cairo_surface_finish(surface.get()); // writes and closes the file: errors show up here
+        check_surface(surface.get(), path);
+        return;
+    }
+    }
+}
+
+} // namespace pvs::ui::chart
