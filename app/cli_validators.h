@@ -31,7 +31,7 @@ inline CLI::Validator size_validator()
 }
 
 // --threads of every command: 0 (all cores) to kMaxThreads. The workers are capped again at the
-// work items and four per hardware thread (visibility/parallel_items.h); a count beyond this range
+// work items and four per hardware thread (visibility/worker_pool.h); a count beyond this range
 // is a typo, refused before anything runs.
 inline constexpr unsigned kMaxThreads = 1024;
 inline CLI::Validator threads_validator() { return CLI::Range(0u, kMaxThreads); }

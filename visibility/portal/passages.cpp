@@ -5,7 +5,8 @@
 #include "visibility/bit_row.h"
 #include "visibility/portal/flow.h"
 #include "visibility/portal/separators.h"
-#include "visibility/portal/vis_threads.h"
+#include "visibility/portal/vis_progress.h"
+#include "visibility/worker_pool.h"
 
 #include <algorithm>
 #include <span>
@@ -219,7 +220,7 @@ bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, Ro
     std::atomic<size_t> total_words{0};
     std::atomic<bool> over_budget{false};
     std::atomic<uint32_t> next_portal{0}, portals_done{0};
-    run_parallel(
+    const bool kept_going = run_workers(
         threads,
         [&](unsigned t) {
             RowBuilder builder(g, level);
@@ -238,8 +239,10 @@ bool build_passages(const Graph& g, int level, std::vector<RunRow>& mightsee, Ro
                 portals_done.fetch_add(1, std::memory_order_relaxed);
             }
         },
-        cancel, user_cancel, progress,
+        cancel, progress,
         [&] { return kBaseWeight + kPassageWeight * double(portals_done.load()) / double(n); });
+    if (!kept_going)
+        user_cancel.store(true);
     if (cancel.load() || over_budget.load()) {
         out = {};
         return false;

@@ -7,7 +7,7 @@
 //   flow_order    the ranking and the rows a flow prunes with (determinism)
 //   flow          the recursive portal flow on one thread (flow_frame: a frame and its clip;
 //                 separators: ClipToSeparators' planes; target_checks: the dead-walk test)
-//   vis_threads   worker threads, progress, cancellation
+//   vis_progress  the progress bar's phase shares (threads: visibility/worker_pool.h)
 #include "visibility/portal/portal_vis.h"
 
 #include "visibility/bit_row.h"
@@ -17,7 +17,8 @@
 #include "visibility/portal/passages.h"
 #include "visibility/portal/portal_graph.h"
 #include "visibility/portal/run_rows.h"
-#include "visibility/portal/vis_threads.h"
+#include "visibility/portal/vis_progress.h"
+#include "visibility/worker_pool.h"
 
 #include <algorithm>
 #include <atomic>
@@ -52,9 +53,9 @@ struct Bake {
     size_t passage_row_bytes = 0;
     size_t narrowing_row_bytes = 0; // base rows and their narrowed copies, both held for a moment
 
-    Bake(const Graph& graph, const VisParams& p, int lvl, unsigned thread_count)
-        : g(graph), params(p), level(lvl), n(uint32_t(graph.portals.size())), threads(thread_count),
-          mightsee(n), nummightsee(n, 0), might_pools(thread_count), state(new std::atomic<uint8_t>[n])
+    Bake(const Graph& graph, const VisParams& p, int lvl, unsigned workers)
+        : g(graph), params(p), level(lvl), n(uint32_t(graph.portals.size())), threads(workers),
+          mightsee(n), nummightsee(n, 0), might_pools(workers), state(new std::atomic<uint8_t>[n])
     {
         for (uint32_t i = 0; i < n; ++i)
             state[i].store(kNone, std::memory_order_relaxed);
@@ -78,7 +79,7 @@ bool run_base_vis(Bake& b, bool full)
     const BaseVisTables tables = base_vis_tables(b.g); // freed when base vis ends
     const std::vector<uint32_t> order = base_vis_batch_order(b.g);
     const uint32_t batches = (b.n + kBatchLanes - 1) / kBatchLanes;
-    run_parallel(
+    const bool kept_going = run_workers(
         b.threads,
         [&](unsigned t) {
             BaseVisBatch batch(b.g);
@@ -98,8 +99,10 @@ bool run_base_vis(Bake& b, bool full)
                 done.fetch_add(lanes, std::memory_order_relaxed);
             }
         },
-        b.cancel, b.user_cancel, b.params.progress,
+        b.cancel, b.params.progress,
         [&] { return (full ? kBaseWeight : 1.0) * double(done.load()) / double(std::max(b.n, 1u)); });
+    if (!kept_going)
+        b.user_cancel.store(true);
     return !b.cancel.load();
 }
 
@@ -193,14 +196,16 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     std::atomic<uint32_t> next{0};
     std::atomic<uint64_t> done_weight{0};
     FlowTotals totals;
-    run_parallel(
+    const bool kept_going = run_workers(
         b.threads,
         [&](unsigned t) { flow_worker(b, t, order, use_passages ? &passages : nullptr, next, done_weight, totals); },
-        b.cancel, b.user_cancel, b.params.progress,
+        b.cancel, b.params.progress,
         [&] {
             const double before = kBaseWeight + (use_passages ? kPassageWeight : 0.0);
             return before + (1.0 - before) * double(done_weight.load()) / double(std::max<uint64_t>(total_weight, 1));
         });
+    if (!kept_going)
+        b.user_cancel.store(true);
     rep.leaf_recursions = totals.leaf_recursions.load();
     rep.target_checks = totals.target_checks.load();
     rep.target_check_prunes = totals.target_check_prunes.load();

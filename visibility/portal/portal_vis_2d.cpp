@@ -1,7 +1,7 @@
 #include "visibility/portal/portal_vis_2d.h"
 
 #include "visibility/bit_row.h"
-#include "visibility/parallel_items.h"
+#include "visibility/worker_pool.h"
 
 #include <algorithm>
 #include <atomic>
@@ -523,12 +523,6 @@ private:
     }
 };
 
-unsigned resolve_threads(unsigned requested, size_t items)
-{
-    unsigned n = requested ? requested : std::max(1u, std::thread::hardware_concurrency());
-    return unsigned(std::max<size_t>(1, std::min<size_t>(n, items)));
-}
-
 } // namespace
 
 Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisParams& params, VisReport* report)
@@ -540,7 +534,7 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
     const uint32_t n = uint32_t(g.portals.size());
     rep.portals = n / 2;
     rep.portals_skipped = g.skipped;
-    rep.threads = resolve_threads(params.threads, n);
+    rep.threads = thread_count(params.threads, n);
     std::atomic<bool> stop{false};
     std::atomic<size_t> finished{0};
     const bool full = params.method == VisParams::Method::Full;

@@ -4,7 +4,7 @@
 
 #include "visibility/bit_row.h"
 #include "visibility/eval/image_accuracy.h"
-#include "visibility/parallel_items.h"
+#include "visibility/worker_pool.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/region_sampler.h"
 #include "visibility/reference/sample_sequence.h"
@@ -48,7 +48,7 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     std::vector<uint64_t> rows(size_t(cells) * words, 0);
     std::atomic<uint64_t> done{0}, points{0};
     std::atomic<bool> stop{false};
-    const unsigned threads = params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = params.threads;
     const bool finished = parallel_items(
         cells, threads, params.progress, [&] { return cells ? double(done.load()) / cells : 1.0; }, stop,
         [&] {
@@ -82,7 +82,7 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     if (report) {
         report->cells = done.load();
         report->points = points.load();
-        report->threads = parallel_items_threads(threads, cells);
+        report->threads = thread_count(threads, cells);
         report->cancelled = !finished;
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         uint64_t bits_set = 0;

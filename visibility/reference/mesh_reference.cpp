@@ -2,7 +2,7 @@
 
 #include "visibility/bit_row.h"
 #include "visibility/eval/image_accuracy.h"
-#include "visibility/parallel_items.h"
+#include "visibility/worker_pool.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/sample_sequence.h"
 
@@ -30,7 +30,7 @@ Pvs bake_mesh_reference_grid(const Zone& zone, const ViewGrid& grid, const MeshR
     std::vector<uint64_t> rows(size_t(cells) * words, 0);
     std::atomic<uint64_t> done{0}, points{0}, open_points{0}, open_cells{0}, rays{0};
     std::atomic<bool> stop{false};
-    const unsigned threads = params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency());
+    const unsigned threads = params.threads;
     const bool finished = parallel_items(
         cells, threads, params.progress, [&] { return cells ? double(done.load()) / cells : 1.0; }, stop,
         [] { return 0; },
@@ -72,7 +72,7 @@ Pvs bake_mesh_reference_grid(const Zone& zone, const ViewGrid& grid, const MeshR
         report->open_points = open_points.load();
         report->open_cells = open_cells.load();
         report->rays = rays.load();
-        report->threads = parallel_items_threads(threads, cells);
+        report->threads = thread_count(threads, cells);
         report->cancelled = !finished;
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         uint64_t set = 0;

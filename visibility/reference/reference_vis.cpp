@@ -1,6 +1,6 @@
 #include "visibility/reference/reference_vis.h"
 
-#include "visibility/parallel_items.h"
+#include "visibility/worker_pool.h"
 
 #include "visibility/portal/portalize.h"
 #include "visibility/reference/line_witness.h"
@@ -141,7 +141,7 @@ void sample_walks(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch& 
     s.lines.fetch_add(lines, std::memory_order_relaxed);
 }
 
-// parallel_items (parallel_items.h) with the reference's stop flag and scratch.
+// parallel_items (worker_pool.h) with the reference's stop flag and scratch.
 template <class Work>
 bool parallel_items(Shared& shared, size_t count, unsigned threads, const std::function<bool(double)>& progress,
                     const std::function<double()>& fraction, Work&& work)
@@ -179,8 +179,7 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     WitnessRows rows(regions);
 
     ReferenceReport report;
-    report.threads = parallel_items_threads(params.threads ? params.threads : std::max(1u, std::thread::hardware_concurrency()),
-                                            zone.region_count());
+    report.threads = thread_count(params.threads, zone.region_count());
     for (uint32_t r = 0; r < regions; ++r)
         report.regions_without_volume += volumes.has_volume(r) ? 0 : 1;
 
