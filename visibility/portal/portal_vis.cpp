@@ -133,28 +133,21 @@ void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* pa
         if (r >= b.n)
             break;
         const uint32_t pi = order.order[r];
-        if (b.cancel.load(std::memory_order_relaxed)) {
-            // Handed out after a cancel: still marked, for any portal waiting on it.
-            b.state[pi].store(kAborted, std::memory_order_release);
-            b.state[pi].notify_all();
-            break;
-        }
-        b.state[pi].store(kWorking, std::memory_order_relaxed);
+        FlowTicket ticket(b.state[pi]); // Aborted unless done(): a portal waiting on pi goes on
+        if (b.cancel.load(std::memory_order_relaxed))
+            break; // handed out after a cancel
         bool ok = false;
         try {
             ok = worker.run(pi, r, b.mightsee[pi], prune_rows, b.cancel);
+            if (ok) {
+                encode_runs(worker.vis(), encoded);
+                b.visbits[pi] = b.vis_pools[t].append(encoded);
+                ticket.done();
+            }
         } catch (...) {
-            b.cancel.store(true); // (bad_alloc growing the frames) release the waiters
-            b.state[pi].store(kAborted, std::memory_order_release);
-            b.state[pi].notify_all();
+            b.cancel.store(true); // (bad_alloc growing the frames or the pool) stop the others
             throw;
         }
-        if (ok) {
-            encode_runs(worker.vis(), encoded);
-            b.visbits[pi] = b.vis_pools[t].append(encoded);
-        }
-        b.state[pi].store(ok ? kDone : kAborted, std::memory_order_release);
-        b.state[pi].notify_all();
         done_weight.fetch_add(b.nummightsee[pi], std::memory_order_relaxed);
         if (!ok)
             break;

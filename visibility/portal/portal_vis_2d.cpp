@@ -1,18 +1,22 @@
 #include "visibility/portal/portal_vis_2d.h"
 
 #include "visibility/bit_row.h"
+#include "visibility/portal/prune_lag.h"
 #include "visibility/worker_pool.h"
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <numeric>
-#include <thread>
 
 namespace pvs {
 
 namespace {
+
+using portal_vis::FlowTicket;
+using portal_vis::PruneLag;
 
 // The flow's tolerances (portal_vis_2d.h, "Conservative"):
 //  - kOnLine: a segment is in front of a line when some point of it is more than kOnLine in
@@ -253,8 +257,9 @@ struct Frame {
 class Walker {
 public:
     Walker(const Graph& g, int level, const std::vector<uint64_t>& flood, const std::vector<uint64_t>& vis,
-           const std::vector<uint32_t>& rank, const std::atomic<uint8_t>* done, const std::atomic<bool>& stop)
-        : g_(g), level_(level), flood_(flood), vis_(vis), rank_(rank), done_(done), stop_(stop), on_chain_(g.leaf_count, 0)
+           const std::vector<uint32_t>& rank, const std::atomic<uint8_t>* state, const std::atomic<bool>& stop)
+        : g_(g), level_(level), flood_(flood), vis_(vis), rank_(rank), lag_(rank.data(), state, kPruneLag2d), stop_(stop),
+          on_chain_(g.leaf_count, 0)
     {
     }
 
@@ -297,7 +302,7 @@ public:
     void watch(ChainProbe* probe) { probe_ = probe; }
 
     size_t leaf_recursions = 0;
-    double wait_seconds = 0;
+    uint64_t waited_nanos = 0;
     size_t dominated = 0; // walks not taken: an earlier window held them
 
 private:
@@ -306,7 +311,7 @@ private:
     const std::vector<uint64_t>& flood_;
     const std::vector<uint64_t>& vis_;
     const std::vector<uint32_t>& rank_;
-    const std::atomic<uint8_t>* done_;
+    PruneLag lag_; // prune_lag.h: which portals' final vis a walk uses, and the wait for it
     const std::atomic<bool>& stop_;
     std::vector<uint8_t> on_chain_;
     std::vector<Frame> frames_;
@@ -345,21 +350,12 @@ private:
     }
 
     // The row a walk ANDs in when it passes portal t: its final vis when t ranks well below
-    // this walk's portal (waiting for it when needed), else its mightsee.
+    // this walk's portal (waiting for it when needed), else its mightsee (also when t's walk was
+    // aborted: a cancelled bake keeps what it has).
     const uint64_t* prune_row(uint32_t t)
     {
-        if (rank_[t] + kPruneLag2d < my_rank_) {
-            if (!done_[t].load(std::memory_order_acquire)) {
-                const auto start = std::chrono::steady_clock::now();
-                while (!done_[t].load(std::memory_order_acquire)) {
-                    if (stop_.load(std::memory_order_relaxed))
-                        return flood_.data() + size_t(t) * g_.words;
-                    std::this_thread::yield();
-                }
-                wait_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            }
+        if (lag_.uses_final(t, my_rank_) && lag_.await_final(t, waited_nanos))
             return vis_.data() + size_t(t) * g_.words;
-        }
         return flood_.data() + size_t(t) * g_.words;
     }
 
@@ -567,13 +563,12 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
         std::vector<uint32_t> rank(n);
         for (uint32_t r = 0; r < n; ++r)
             rank[by_rank[r]] = r;
-        std::unique_ptr<std::atomic<uint8_t>[]> done(new std::atomic<uint8_t>[n]);
+        std::unique_ptr<std::atomic<uint8_t>[]> state(new std::atomic<uint8_t>[n]);
         for (uint32_t i = 0; i < n; ++i)
-            done[i].store(0);
+            state[i].store(portal_vis::kNone, std::memory_order_relaxed);
         finished.store(0);
         std::atomic<size_t> recursions{0};
-        std::mutex wait_mutex;
-        double waited = 0;
+        std::atomic<uint64_t> waited_nanos{0};
         const auto flow_progress = params.progress ? std::function<bool(double)>([&](double f) {
             return params.progress(base_share + f * (1.0 - base_share));
         })
@@ -586,28 +581,27 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
             n, rep.threads, flow_progress, fraction, stop,
             [&] {
                 Scratch s;
-                s.walker = std::make_unique<Walker>(g, std::clamp(params.level, 0, 3), flood, vis, rank, done.get(), stop);
+                s.walker = std::make_unique<Walker>(g, std::clamp(params.level, 0, 3), flood, vis, rank, state.get(), stop);
                 s.walker->watch(params.probe);
                 s.row.assign(g.words, 0);
                 return s;
             },
             [&](size_t item, Scratch& s) {
                 const uint32_t pi = by_rank[item];
+                FlowTicket ticket(state[pi]); // Aborted unless done(): a walk waiting on pi goes on
                 const size_t before_recursions = s.walker->leaf_recursions;
-                const double before_wait = s.walker->wait_seconds;
-                const bool walked = s.walker->run(pi, s.row.data());
-                if (walked) {
+                const uint64_t before_wait = s.walker->waited_nanos;
+                if (s.walker->run(pi, s.row.data())) {
                     std::copy(s.row.begin(), s.row.end(), vis.begin() + ptrdiff_t(size_t(pi) * g.words));
                     finished_walk[pi] = 1;
-                    done[pi].store(1, std::memory_order_release);
+                    ticket.done();
                 }
                 recursions.fetch_add(s.walker->leaf_recursions - before_recursions);
-                const std::lock_guard lock(wait_mutex);
-                waited += s.walker->wait_seconds - before_wait;
+                waited_nanos.fetch_add(s.walker->waited_nanos - before_wait, std::memory_order_relaxed);
                 finished.fetch_add(1, std::memory_order_relaxed);
             });
         rep.leaf_recursions = recursions.load();
-        rep.wait_seconds = waited;
+        rep.wait_seconds = double(waited_nanos.load()) * 1e-9;
     }
     rep.cancelled = !ok;
 

@@ -56,9 +56,10 @@
 //
 // Determinism, threads, progress, cancellation: as bake_portal_vis. The directed portals are
 // ranked by increasing mightsee count (ties by index) and handed to the threads in rank order;
-// a walk prunes with the final vis of portals ranked more than 8 below its own
-// (waiting for one still being walked) and with the mightsee of the others, so the result is
-// a fixed function of the input and the level, whatever the thread count. Cancelling returns
+// a walk prunes with the final vis of portals ranked more than 8 below its own (waiting for one
+// still being walked) and with the mightsee of the others - the rule of portal/prune_lag.h, which
+// the 3-D flow shares with a lag of 32 - so the result is a fixed function of the input and the
+// level, whatever the thread count. Cancelling returns
 // the finished portals' vis and the unfinished ones' mightsee (conservative).
 //
 // Memory: two rows of region_count bits per directed portal and, per thread, one row per walk
