@@ -18,7 +18,7 @@ namespace pvs {
 namespace {
 
 using gui::BakeJob;
-using gui::BakeStatus;
+using gui::JobStatus;
 
 Zone tiny_zone()
 {
@@ -31,10 +31,10 @@ Zone tiny_zone()
 }
 
 // Polls until the job leaves Running (a minute at most: the tiny bakes take milliseconds).
-BakeStatus wait(BakeJob& job)
+JobStatus wait(BakeJob& job)
 {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
-    while (job.poll() == BakeStatus::Running && std::chrono::steady_clock::now() < deadline)
+    while (job.poll() == JobStatus::Running && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     return job.status();
 }
@@ -51,12 +51,12 @@ TEST(BakeJob, CompletesWithTheBakersOwnResult)
 {
     const Zone zone = tiny_zone();
     BakeJob job;
-    EXPECT_EQ(job.status(), BakeStatus::Idle);
+    EXPECT_EQ(job.status(), JobStatus::Idle);
     gui::BakeRequest request;
     request.method = VisParams::Method::Full;
     request.threads = 1;
     ASSERT_TRUE(job.start(zone, request));
-    ASSERT_EQ(wait(job), BakeStatus::Done) << job.error();
+    ASSERT_EQ(wait(job), JobStatus::Done) << job.error();
     ASSERT_TRUE(job.result());
     EXPECT_EQ(job.result()->region_count(), zone.region_count());
     EXPECT_GT(job.portal_count(), 0u);
@@ -87,13 +87,13 @@ TEST(BakeJob, RefusesASecondStartWhileRunning)
     };
     ASSERT_TRUE(job.start(zone, {}));
     EXPECT_FALSE(job.start(zone, {}));
-    EXPECT_EQ(job.poll(), BakeStatus::Running);
+    EXPECT_EQ(job.poll(), JobStatus::Running);
     release.set_value();
-    EXPECT_EQ(wait(job), BakeStatus::Done);
+    EXPECT_EQ(wait(job), JobStatus::Done);
     ASSERT_TRUE(job.take_result());
     EXPECT_FALSE(job.result()); // taken
     EXPECT_TRUE(job.start(zone, {})); // and again once finished
-    EXPECT_EQ(wait(job), BakeStatus::Done);
+    EXPECT_EQ(wait(job), JobStatus::Done);
 }
 
 TEST(BakeJob, CancelAtTheFirstProgressKeepsNothing)
@@ -105,7 +105,7 @@ TEST(BakeJob, CancelAtTheFirstProgressKeepsNothing)
     request.method = VisParams::Method::Full;
     request.threads = 2;
     ASSERT_TRUE(job.start(zone, request));
-    EXPECT_EQ(wait(job), BakeStatus::Cancelled);
+    EXPECT_EQ(wait(job), JobStatus::Cancelled);
     EXPECT_FALSE(job.result());
     EXPECT_TRUE(job.report().cancelled);
 }
@@ -117,7 +117,7 @@ TEST(BakeJob, StopWaitsForTheWorker)
     job.on_progress = [](double) { std::this_thread::sleep_for(std::chrono::milliseconds(20)); };
     ASSERT_TRUE(job.start(zone, {}));
     job.stop();
-    EXPECT_NE(job.status(), BakeStatus::Running);
+    EXPECT_NE(job.status(), JobStatus::Running);
 }
 
 TEST(InspectorBake, BakedPvsBecomesASourceAndTheCullerUsesIt)
@@ -171,7 +171,7 @@ TEST(InspectorBake, OpeningAZoneWhileBakingStopsTheBake)
     request.method = VisParams::Method::Full;
     ASSERT_TRUE(state.start_bake(request));
     state.open_demo(); // must not leave the worker reading the old zone
-    EXPECT_NE(state.bake_job().status(), BakeStatus::Running);
+    EXPECT_NE(state.bake_job().status(), JobStatus::Running);
     EXPECT_FALSE(state.baked_pvs());
 }
 

@@ -16,7 +16,7 @@
 namespace pvs {
 namespace {
 
-using gui::BakeStatus;
+using gui::JobStatus;
 
 ui::CompareOptions small_compare()
 {
@@ -31,7 +31,7 @@ ui::CompareOptions small_compare()
 void wait(gui::InspectorState& state)
 {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-    while (state.compare_job().poll() == BakeStatus::Running && std::chrono::steady_clock::now() < deadline)
+    while (state.compare_job().poll() == JobStatus::Running && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
 }
 
@@ -43,7 +43,7 @@ TEST(InspectorCompare, ARowsPvsBecomesTheCullingSource)
     ASSERT_TRUE(state.start_compare(small_compare()));
     EXPECT_FALSE(state.start_compare(small_compare())) << "one compare at a time";
     wait(state);
-    ASSERT_EQ(state.compare_job().status(), BakeStatus::Done) << state.compare_job().error();
+    ASSERT_EQ(state.compare_job().status(), JobStatus::Done) << state.compare_job().error();
     const ui::CompareResult& result = *state.compare_job().result();
     ASSERT_EQ(result.rows.size(), 3u); // reference (64 lines), none, portal-fast
     EXPECT_EQ(result.rows[2].method, "portal-fast");
@@ -63,7 +63,7 @@ TEST(InspectorCompare, ARowsPvsBecomesTheCullingSource)
     EXPECT_FALSE(state.use_compared_pvs(3));
 
     state.open_demo(); // a new zone stops and forgets nothing it should not: the job is not running
-    EXPECT_NE(state.compare_job().status(), BakeStatus::Running);
+    EXPECT_NE(state.compare_job().status(), JobStatus::Running);
 }
 
 TEST(InspectorCompare, PanelDrawsTheChartWithTheNullBackend)

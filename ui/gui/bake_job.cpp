@@ -2,105 +2,64 @@
 
 #include "visibility/methods/vis_method.h"
 
-#include <exception>
 #include <utility>
 
 namespace pvs::gui {
 
-const char* bake_status_name(BakeStatus status)
+const char* job_status_name(JobStatus status)
 {
     switch (status) {
-    case BakeStatus::Idle: return "idle";
-    case BakeStatus::Running: return "running";
-    case BakeStatus::Done: return "done";
-    case BakeStatus::Cancelled: return "cancelled";
-    case BakeStatus::Failed: return "failed";
+    case JobStatus::Idle: return "idle";
+    case JobStatus::Running: return "running";
+    case JobStatus::Done: return "done";
+    case JobStatus::Cancelled: return "cancelled";
+    case JobStatus::Failed: return "failed";
     }
     return "?";
 }
 
-BakeJob::~BakeJob() { stop(); }
-
 bool BakeJob::start(const Zone& zone, const BakeRequest& request)
 {
-    if (status_ == BakeStatus::Running)
+    if (job_.status() == JobStatus::Running)
         return false;
-    if (thread_.joinable())
-        thread_.join(); // finished already (status is not Running)
-    progress_ = 0.0;
-    cancel_ = false;
-    finished_ = false;
-    result_.reset();
-    report_ = {};
-    portal_count_ = 0;
-    error_.clear();
     request_ = request;
-    status_ = BakeStatus::Running;
-    thread_ = std::jthread([this, &zone, request] { run(zone, request); });
-    return true;
+    return job_.start(
+        [this, &zone, request](JobControl& control) {
+            Output out;
+            VisParams params;
+            params.method = request.method;
+            params.level = request.level;
+            params.threads = request.threads;
+            params.progress = [this, &control](double fraction) {
+                control.set_progress(fraction);
+                if (on_progress)
+                    on_progress(fraction);
+                return !control.cancel_requested();
+            };
+            if (!control.cancel_requested())
+                out.pvs = bake_zone_portal_vis(zone, params, false, &out.report, &out.portals);
+            return out;
+        },
+        [](const Output& out) { return out.pvs && !out.report.cancelled; });
 }
 
-void BakeJob::run(const Zone& zone, BakeRequest request)
+const std::optional<Pvs>& BakeJob::result() const
 {
-    std::optional<Pvs> pvs;
-    VisReport report;
-    size_t portals = 0;
-    std::string error;
-    try {
-        VisParams params;
-        params.method = request.method;
-        params.level = request.level;
-        params.threads = request.threads;
-        params.progress = [this](double fraction) {
-            progress_ = fraction;
-            if (on_progress)
-                on_progress(fraction);
-            return !cancel_.load();
-        };
-        if (!cancel_)
-            pvs = bake_zone_portal_vis(zone, params, false, &report, &portals);
-    } catch (const std::exception& e) {
-        error = e.what();
-    }
-    const std::lock_guard lock(mutex_);
-    worker_result_ = std::move(pvs);
-    worker_report_ = report;
-    worker_portals_ = portals;
-    worker_error_ = std::move(error);
-    finished_ = true;
+    static const std::optional<Pvs> kNone;
+    return job_.status() == JobStatus::Done ? output().pvs : kNone;
 }
 
-void BakeJob::cancel() { cancel_ = true; }
-
-void BakeJob::stop()
+std::optional<Pvs> BakeJob::take_result()
 {
-    cancel();
-    if (thread_.joinable())
-        thread_.join();
-    poll();
+    if (job_.status() != JobStatus::Done || !job_.output())
+        return std::nullopt;
+    return std::exchange(job_.output()->pvs, std::nullopt);
 }
 
-BakeStatus BakeJob::poll()
+const BakeJob::Output& BakeJob::output() const
 {
-    if (status_ != BakeStatus::Running || !finished_.load())
-        return status_;
-    if (thread_.joinable())
-        thread_.join();
-    const std::lock_guard lock(mutex_);
-    report_ = worker_report_;
-    portal_count_ = worker_portals_;
-    error_ = std::move(worker_error_);
-    const bool cancelled = report_.cancelled || !worker_result_; // a finished bake stays Done
-    if (!error_.empty())
-        status_ = BakeStatus::Failed;
-    else if (cancelled)
-        status_ = BakeStatus::Cancelled; // a cancelled bake's PVS is only conservative: not offered
-    else {
-        status_ = BakeStatus::Done;
-        result_ = std::move(worker_result_);
-    }
-    worker_result_.reset();
-    return status_;
+    static const Output kNothing;
+    return job_.output() ? *job_.output() : kNothing;
 }
 
 } // namespace pvs::gui

@@ -38,7 +38,7 @@ void draw_request(InspectorState& state, BakePanel& panel)
         r.threads = unsigned(std::clamp(threads, 1, cores));
 
     BakeJob& job = state.bake_job();
-    if (job.status() == BakeStatus::Running) {
+    if (job.status() == JobStatus::Running) {
         if (ImGui::Button("Cancel"))
             job.cancel();
         ImGui::SameLine();
@@ -51,9 +51,9 @@ void draw_request(InspectorState& state, BakePanel& panel)
 void draw_outcome(const InspectorState& state)
 {
     const BakeJob& job = state.bake_job();
-    if (job.status() == BakeStatus::Failed)
+    if (job.status() == JobStatus::Failed)
         ImGui::TextColored({1.0f, 0.4f, 0.3f, 1.0f}, "bake failed: %s", job.error().c_str());
-    else if (job.status() == BakeStatus::Cancelled)
+    else if (job.status() == JobStatus::Cancelled)
         ImGui::TextDisabled("cancelled: nothing kept");
     if (!state.baked_pvs())
         return;

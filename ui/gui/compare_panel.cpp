@@ -24,7 +24,7 @@ void draw_request(InspectorState& state, ComparePanel& panel)
     ImGui::InputInt("cameras", &panel.cameras, 10, 100);
     panel.cameras = std::clamp(panel.cameras, 0, 5000);
     CompareJob& job = state.compare_job();
-    if (job.status() == BakeStatus::Running) {
+    if (job.status() == JobStatus::Running) {
         char label[96];
         std::snprintf(label, sizeof label, "%s %.0f%%", job.stage().c_str(), 100.0 * job.progress());
         ImGui::ProgressBar(float(job.progress()), ImVec2(-1.0f, 0.0f), label);
@@ -38,9 +38,9 @@ void draw_request(InspectorState& state, ComparePanel& panel)
         options.cameras = size_t(panel.cameras);
         state.start_compare(options);
     }
-    if (job.status() == BakeStatus::Failed)
+    if (job.status() == JobStatus::Failed)
         ImGui::TextWrapped("compare failed: %s", job.error().c_str());
-    else if (job.status() == BakeStatus::Cancelled)
+    else if (job.status() == JobStatus::Cancelled)
         ImGui::TextUnformatted("compare cancelled");
 }
 

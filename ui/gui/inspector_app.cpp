@@ -222,8 +222,8 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-        const bool working = state.bake_job().status() == BakeStatus::Running ||
-                             state.compare_job().status() == BakeStatus::Running || state.explanation_running();
+        const bool working = state.bake_job().status() == JobStatus::Running ||
+                             state.compare_job().status() == JobStatus::Running || state.explanation_running();
         if (scripted && working && frames == 0) {
             glfwSwapBuffers(platform.window);
             continue; // a scripted bake: the timed or screenshot frames start once it is done

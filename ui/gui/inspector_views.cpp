@@ -281,7 +281,7 @@ bool InspectorState::use_compared_pvs(size_t row)
 
 void InspectorState::poll_bake()
 {
-    if (bake_.status() != BakeStatus::Running || bake_.poll() != BakeStatus::Done)
+    if (bake_.status() != JobStatus::Running || bake_.poll() != JobStatus::Done)
         return;
     baked_pvs_ = bake_.take_result();
     baked_label_ = bake_.request().method == VisParams::Method::Fast ? "portal-fast" : "portal-full";
