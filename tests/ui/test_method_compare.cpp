@@ -179,12 +179,14 @@ TEST(Chart, CompareRowsBecomeShortLabelledPoints)
     row("portal-full", "level=4 passages=off target-checks=on", true, 1.0);
     row("clustered", "level=2 passages=on target-checks=off", true, 1.0);
     row("file", "", false, 5.0);
+    row("raster", "res=64 points=8 step=0 lattice=open", true, 3.0);
     const std::vector<chart::ChartPoint> points = chart::compare_chart_points(result);
-    ASSERT_EQ(points.size(), 4u);
+    ASSERT_EQ(points.size(), 5u);
     EXPECT_EQ(points[0].label, "reference 1024");
     EXPECT_EQ(points[1].label, "portal-full L4 -passages");
     EXPECT_EQ(points[2].label, "clustered L2 -checks");
     EXPECT_EQ(points[3].label, "file");
+    EXPECT_EQ(points[4].label, "raster 64px 8pt");
     EXPECT_EQ(points[3].seconds, 0.0) << "nothing baked: the stored column";
     EXPECT_EQ(points[0].missing_bits, 3.0);
     EXPECT_EQ(points[0].excess_bits, 4.0);

@@ -22,6 +22,8 @@ std::string short_label(const CompareRow& r)
                (r.params.ends_with(" heights") ? " heights" : "");
     if (r.method == "reference")
         return r.method + " " + param(r.params, "samples");
+    if (r.method == "raster" && !param(r.params, "res").empty()) // several rows differ by these two
+        return r.method + " " + param(r.params, "res") + "px " + param(r.params, "points") + "pt";
     return r.method;
 }
 

@@ -171,7 +171,8 @@ PointPositions draw_speed_accuracy_chart(std::span<const ChartPoint> points, con
     std::vector<Color> colors;
     PointPositions positions(points.size());
     // Every point first (their circles are taken space), then a label beside each where it
-    // overlaps no circle and no label drawn before it: right of the point, else left, else none.
+    // overlaps no circle and no label drawn before it: right of the point, else left, above, below,
+    // else none.
     std::vector<std::array<glm::vec2, 2>> taken[2];
     for (size_t i = 0; i < points.size(); ++i) {
         const ChartPoint& p = points[i];
@@ -187,7 +188,7 @@ PointPositions draw_speed_accuracy_chart(std::span<const ChartPoint> points, con
         }
     }
     auto try_label = [&](int side, glm::vec2 min, glm::vec2 max) {
-        if (min.x < panels[side].min.x || max.x > panels[side].max.x + 8.0f)
+        if (min.x < panels[side].min.x || max.x > panels[side].max.x)
             return false;
         for (const auto& r : taken[side])
             if (min.x < r[1].x && r[0].x < max.x && min.y < r[1].y && r[0].y < max.y)
@@ -199,11 +200,15 @@ PointPositions draw_speed_accuracy_chart(std::span<const ChartPoint> points, con
         for (int side = 0; side < 2; ++side) {
             const glm::vec2 at = positions[i][size_t(side)];
             const glm::vec2 extent(canvas.text_width(points[i].label), th);
-            const glm::vec2 right{at.x + 7.0f, at.y - th * 0.5f}, left{at.x - 7.0f - extent.x, at.y - th * 0.5f};
-            if (try_label(side, right, right + extent))
-                canvas.text(right, points[i].label, colors[i]);
-            else if (try_label(side, left, left + extent))
-                canvas.text(left, points[i].label, colors[i]);
+            const glm::vec2 places[] = {{at.x + 7.0f, at.y - th * 0.5f},
+                                        {at.x - 7.0f - extent.x, at.y - th * 0.5f},
+                                        {at.x - extent.x * 0.5f, at.y - 6.0f - th},
+                                        {at.x - extent.x * 0.5f, at.y + 6.0f}};
+            for (const glm::vec2& place : places)
+                if (try_label(side, place, place + extent)) {
+                    canvas.text(place, points[i].label, colors[i]);
+                    break;
+                }
         }
     return positions;
 }
