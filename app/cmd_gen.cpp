@@ -4,6 +4,8 @@
 #include "app/progress_bar.h"
 #include "visibility/file_error.h"
 #include "wld/convert.h"
+#include "wld/gen/generate_outdoor_zone.h"
+#include "wld/gen/terrain_level.h"
 #include "wld/gen/generate_zone.h"
 #include "wld/gen/stability_cases.h"
 #include "wld/gen/voxel_level.h"
@@ -21,6 +23,9 @@ struct GenOptions {
     bool json = false;
     std::string output;
     std::string case_name; // a crafted stability case instead of a procedural zone
+    bool outdoor = false;  // a terrain zone instead of rooms
+    float size = gen::OutdoorParams{}.size;
+    int height = gen::OutdoorParams{}.height;
 };
 
 // The case's boxes (= regions) and its truth, row by row, for a user checking what a method got.
@@ -44,15 +49,28 @@ void print_case(const gen::StabilityCase& c)
 void register_gen_command(CLI::App& app, int& exit_code)
 {
     auto options = std::make_shared<GenOptions>();
-    CLI::App* cmd = app.add_subcommand("gen", "Make a procedural indoor zone (rooms, corridors, floors, liquids, "
-                                              "PvP arena, zone line) and print its report");
+    CLI::App* cmd = app.add_subcommand("gen", "Make a procedural zone - indoor (rooms, corridors, floors, liquids, "
+                                              "PvP arena, zone line) or, with --outdoor, a terrain zone (hills, a "
+                                              "walled town, a lake and bridge, lava, zone lines; one region per "
+                                              "open cell) - and print its report");
     cmd->add_option("--rooms", options->params.rooms, "Number of rooms")
         ->check(CLI::Range(gen::kMinRooms, gen::kMaxRooms))
         ->capture_default_str();
     cmd->add_option("--seed", options->params.seed, "Random seed: the same seed gives the same zone")
         ->capture_default_str();
-    cmd->add_option("--cell", options->params.cell_size, "World units per grid cell (rooms are 3 cells high)")
+    CLI::Option* cell = cmd->add_option("--cell", options->params.cell_size,
+                                        "World units per grid cell (rooms are 3 cells high; --outdoor: default 64)")
+                            ->check(CLI::PositiveNumber)
+                            ->capture_default_str();
+    CLI::Option* outdoor = cmd->add_flag("--outdoor", options->outdoor,
+                                         "A terrain zone as EverQuest's open zones (see --size, --height)");
+    cmd->add_option("--size", options->size, "--outdoor: world units a side")
         ->check(CLI::PositiveNumber)
+        ->needs(outdoor)
+        ->capture_default_str();
+    cmd->add_option("--height", options->height, "--outdoor: cells from the bottom of the world to the sky")
+        ->check(CLI::Range(gen::kMinTerrainHeight, gen::kMaxTerrainHeight))
+        ->needs(outdoor)
         ->capture_default_str();
     cmd->add_flag("--no-bake{false},--bake", options->params.bake,
                   "Do not bake the PVS (by default the zone is baked with portal-full when made)");
@@ -60,9 +78,10 @@ void register_gen_command(CLI::App& app, int& exit_code)
     std::vector<std::string> case_names(gen::stability_case_names().begin(), gen::stability_case_names().end());
     cmd->add_option("--case", options->case_name, "Instead of rooms: a crafted zone on one failure mode, with its "
                                                   "known truth (pvscope stability --cases runs every method on them)")
-        ->check(CLI::IsMember(case_names));
+        ->check(CLI::IsMember(case_names))
+        ->excludes(outdoor);
     cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
-    cmd->callback([options, &exit_code] {
+    cmd->callback([options, cell, &exit_code] {
         const auto start = std::chrono::steady_clock::now();
         gen::GenParams params = options->params;
         std::optional<ProgressBar> bar; // made on the first call: only a bake that runs shows it
@@ -75,7 +94,27 @@ void register_gen_command(CLI::App& app, int& exit_code)
         std::optional<gen::StabilityCase> crafted;
         if (!options->case_name.empty())
             crafted.emplace(gen::make_stability_case(options->case_name));
-        const Zone zone = crafted ? std::move(crafted->zone) : gen::generate_zone(params);
+        std::optional<Zone> made;
+        if (crafted)
+            made.emplace(std::move(crafted->zone));
+        else if (options->outdoor) {
+            gen::OutdoorParams outdoor_params;
+            outdoor_params.size = options->size;
+            outdoor_params.cell_size = cell->count() > 0 ? params.cell_size : outdoor_params.cell_size;
+            outdoor_params.height = options->height;
+            outdoor_params.seed = params.seed;
+            outdoor_params.bake = params.bake;
+            outdoor_params.bake_progress = params.bake_progress;
+            try {
+                made.emplace(gen::generate_outdoor_zone(outdoor_params));
+            } catch (const std::invalid_argument& e) {
+                std::fprintf(stderr, "pvscope: error: %s\n", e.what());
+                exit_code = 2;
+                return;
+            }
+        } else
+            made.emplace(gen::generate_zone(params));
+        const Zone& zone = *made;
         if (bar)
             bar->finish();
         if (crafted && !options->json)

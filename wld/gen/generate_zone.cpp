@@ -12,18 +12,16 @@
 
 namespace pvs::gen {
 
-namespace {
-
 // The zone's own portals, baked portal-full at level 4; the notes say how it was made.
-void bake_pvs(Zone& zone, const GenParams& gen)
+void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress)
 {
     PortalStats portal_stats;
     zone.portals = build_zone_portals(zone, {}, &portal_stats);
     VisParams params;
     params.method = VisParams::Method::Full;
     params.level = 4;
-    params.threads = gen.bake_threads;
-    params.progress = gen.bake_progress;
+    params.threads = threads;
+    params.progress = progress;
     VisReport report;
     zone.baked_pvs = bake_portal_vis(*zone.portals, uint32_t(zone.regions.size()), params, &report);
     if (report.cancelled) {
@@ -42,8 +40,6 @@ void bake_pvs(Zone& zone, const GenParams& gen)
         zone.source.notes.push_back("warning: " + std::to_string(portal_stats.leaves_touching_world.size()) +
                                     " open leaves touch the world box (a leak in the generator)");
 }
-
-} // namespace
 
 Zone generate_zone(const GenParams& params)
 {
@@ -64,7 +60,7 @@ Zone generate_zone(const GenParams& params)
                           {"stairs", uint64_t(level.stairs)},
                           {"cells", level.cells.size()}};
     if (params.bake)
-        bake_pvs(zone, params);
+        bake_generated_pvs(zone, params.bake_threads, params.bake_progress);
     else
         zone.source.notes.push_back("no PVS: not baked (GenParams::bake off; the culler falls back to the frustum)");
     zone.shrink_to_fit(); // loaders grow their vectors; keep only what the zone needs

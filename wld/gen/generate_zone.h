@@ -35,6 +35,11 @@ struct GenParams {
 // Throws std::invalid_argument for rooms outside [5, 5000] or a non-positive cell size.
 Zone generate_zone(const GenParams& params);
 
+// Bakes a generated zone's PVS with portal-full (level 4) from portals built from its tree, as
+// GenParams::bake does; the zone's notes say how it was made, or that the bake was cancelled
+// (progress returned false: then the zone has no PVS).
+void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress);
+
 // The built-in demo zone (the README's first command opens it), baked.
 inline GenParams demo_zone_params() { return {60, 2026, 32.0f, true}; }
 

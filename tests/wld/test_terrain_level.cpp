@@ -1,0 +1,146 @@
+// Procedural outdoor zones (wld/gen/terrain_level.h, generate_outdoor_zone.h): the region tree as
+// EverQuest's open zones (one region per open cell, none under the ground), a region count in
+// the range the zone is meant for, terrain that really hides (checked by marching sight lines
+// through the grid, written here), overhangs, liquids and zone lines where they were placed, and
+// bad parameters refused.
+#include "wld/gen/generate_outdoor_zone.h"
+#include "wld/gen/terrain_level.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <random>
+#include <stdexcept>
+
+namespace pvs::gen {
+namespace {
+
+bool open(Cell c) { return c != Cell::Solid; }
+
+TEST(TerrainLevel, SameParametersSameGridAndSeedsDiffer)
+{
+    const VoxelLevel a = make_terrain_level({64, 14, 7});
+    const VoxelLevel b = make_terrain_level({64, 14, 7});
+    const VoxelLevel c = make_terrain_level({64, 14, 8});
+    EXPECT_EQ(a.cells, b.cells);
+    EXPECT_NE(a.cells, c.cells);
+}
+
+TEST(TerrainLevel, GroundIsSolidBelowAndOverhangsExist)
+{
+    TerrainFeatures f;
+    const VoxelLevel level = make_terrain_level({64, 14, 1}, &f);
+    ASSERT_EQ(f.ground.size(), 64u * 64u);
+    size_t open_under_solid = 0;
+    for (int y = 0; y < 64; ++y)
+        for (int x = 0; x < 64; ++x) {
+            const int ground = f.ground[size_t(y) * 64 + size_t(x)];
+            ASSERT_GE(ground, 1);
+            for (int z = 0; z < ground; ++z)
+                ASSERT_EQ(level.at(x, y, z), Cell::Solid) << x << "," << y << "," << z;
+            ASSERT_TRUE(open(level.at(x, y, ground)) || level.at(x, y, ground + 1) == Cell::Solid ||
+                        ground >= f.town_lo.z)
+                << "the first cell above the ground is open, but for walls and buildings";
+            for (int z = ground; z + 1 < level.dims.z; ++z)
+                open_under_solid += open(level.at(x, y, z)) && level.at(x, y, z + 1) == Cell::Solid ? 1 : 0;
+        }
+    // The bridge over the lake and the rock arch: open cells under solid ones.
+    EXPECT_GT(open_under_solid, 25u);
+    for (int x = f.arch_lo.x; x < f.arch_hi.x; ++x)
+        EXPECT_EQ(level.at(x, f.arch_lo.y, f.arch_hi.z), Cell::Solid);
+    EXPECT_GT(f.buildings, 0);
+}
+
+TEST(TerrainLevel, LiquidsAndZoneLinesWhereTheyWerePlaced)
+{
+    TerrainFeatures f;
+    const VoxelLevel level = make_terrain_level({64, 14, 3}, &f);
+    EXPECT_EQ(level.at(f.lake_center.x, f.lake_center.y, f.water_level - 1), Cell::Water);
+    size_t lava = 0, zone_low = 0, zone_high = 0;
+    for (int z = 0; z < level.dims.z; ++z)
+        for (int y = 0; y < 64; ++y) {
+            for (int x = 0; x < 64; ++x)
+                lava += level.at(x, y, z) == Cell::Lava ? 1 : 0;
+            zone_low += level.at(0, y, z) == Cell::ZoneLine ? 1 : 0;
+            zone_high += level.at(63, y, z) == Cell::ZoneLine ? 1 : 0;
+        }
+    EXPECT_GT(lava, 0u);
+    EXPECT_GT(zone_low, 0u);
+    EXPECT_GT(zone_high, 0u);
+}
+
+// A sight line between two cell centres is blocked when a point along it, marched in steps of a
+// tenth of a cell, lies in a solid cell.
+bool blocked(const VoxelLevel& level, glm::vec3 a, glm::vec3 b)
+{
+    const int steps = int(glm::length(b - a) * 10.0f) + 1;
+    for (int i = 1; i < steps; ++i) {
+        const glm::vec3 p = a + (b - a) * (float(i) / float(steps));
+        if (level.at(int(std::floor(p.x)), int(std::floor(p.y)), int(std::floor(p.z))) == Cell::Solid)
+            return true;
+    }
+    return false;
+}
+
+TEST(TerrainLevel, HillsHideOnePartOfTheGroundFromAnother)
+{
+    TerrainFeatures f;
+    const VoxelLevel level = make_terrain_level({64, 14, 1}, &f);
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> column(0, 63);
+    int pairs = 0, hidden = 0;
+    while (pairs < 400) {
+        const int x0 = column(rng), y0 = column(rng), x1 = column(rng), y1 = column(rng);
+        const int z0 = f.ground[size_t(y0) * 64 + size_t(x0)], z1 = f.ground[size_t(y1) * 64 + size_t(x1)];
+        if (!open(level.at(x0, y0, z0)) || !open(level.at(x1, y1, z1)))
+            continue;
+        ++pairs;
+        hidden += blocked(level, glm::vec3(x0, y0, z0) + 0.5f, glm::vec3(x1, y1, z1) + 0.5f) ? 1 : 0;
+    }
+    EXPECT_GT(hidden, pairs / 4) << "of ground cells a person stands in, many pairs cannot see each other";
+    EXPECT_LT(hidden, pairs) << "and some can";
+}
+
+TEST(OutdoorZone, OneRegionPerOpenCellInTheIntendedRange)
+{
+    const Zone zone = generate_outdoor_zone({});
+    const VoxelLevel level = make_terrain_level({64, 14, 1});
+    size_t open_cells = 0;
+    for (Cell c : level.cells)
+        open_cells += open(c) ? 1 : 0;
+    EXPECT_EQ(zone.region_count(), open_cells);
+    EXPECT_GE(zone.region_count(), 10000u);
+    EXPECT_LE(zone.region_count(), 40000u);
+    size_t water = 0, lava = 0, zone_line = 0;
+    for (const Region& r : zone.regions) {
+        const glm::vec3 extent = r.bounds.max - r.bounds.min;
+        ASSERT_FLOAT_EQ(extent.x, 64.0f);
+        ASSERT_FLOAT_EQ(extent.y, 64.0f);
+        ASSERT_FLOAT_EQ(extent.z, 64.0f);
+        water += (r.flags & kRegionWater) ? 1 : 0;
+        lava += (r.flags & kRegionLava) ? 1 : 0;
+        zone_line += (r.flags & kRegionZoneLine) ? 1 : 0;
+    }
+    EXPECT_GT(water, 0u);
+    EXPECT_GT(lava, 0u);
+    EXPECT_GT(zone_line, 0u);
+    EXPECT_FALSE(zone.baked_pvs);
+}
+
+TEST(OutdoorZone, BadParametersAreRefused)
+{
+    OutdoorParams p;
+    p.cell_size = 0;
+    EXPECT_THROW(generate_outdoor_zone(p), std::invalid_argument);
+    p = {};
+    p.size = 64.0f * 8; // 8 columns
+    EXPECT_THROW(generate_outdoor_zone(p), std::invalid_argument);
+    p = {};
+    p.height = 3;
+    EXPECT_THROW(generate_outdoor_zone(p), std::invalid_argument);
+    EXPECT_THROW(make_terrain_level({1000, 14, 1}), std::invalid_argument);
+}
+
+} // namespace
+} // namespace pvs::gen
