@@ -14,12 +14,14 @@
 #include "wld/eq/eq_zone_writer.h"
 #include "wld/eq/pfs_archive.h"
 #include "wld/eq/stb_image_io.h"
+#include "wld/eq/wld_mesh.h"
 #include "wld/eq/wld_file.h"
 #include "wld/gen/generate_zone.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -350,6 +352,72 @@ TEST(EqZoneRoundTrip, NoPvsIsWrittenAsEmptyListsAndReadAsNone)
                             [](const std::string& n) { return n.find("no PVS") != std::string::npos; }));
     EXPECT_TRUE(std::any_of(written.notes.begin(), written.notes.end(),
                             [](const std::string& n) { return n.find("no baked PVS") != std::string::npos; }));
+}
+
+// The zone WLD of an archive, parsed.
+eq::WldFile zone_wld(const std::vector<uint8_t>& s3d)
+{
+    const eq::PfsArchive archive(s3d, "zone.s3d");
+    return eq::parse_wld(archive.read("zone.wld"), "zone.wld");
+}
+
+// A zone line in water is one 0x29 whose name says both (WTNTP...), so that a reader keeping one
+// type per region (ZU: the first prefix that matches) still sees water, and LX/ES/WillEQ both.
+TEST(EqZoneRoundTrip, ZoneLineInWaterIsOneCombinedFlag)
+{
+    Zone a = hand_zone();
+    a.regions[2].flags = kRegionZoneLine | kRegionWater;
+    const std::vector<uint8_t> s3d = write_eq_zone(a, "zone");
+    const eq::WldFile wld = zone_wld(s3d);
+    int combined = 0;
+    for (uint32_t n = 1; n <= wld.fragments.size(); ++n) {
+        if (wld.fragments[n - 1].type != eq::kWldRegionFlag)
+            continue;
+        const eq::WldRegionFlag flag = eq::parse_region_flag(wld, n);
+        const bool holds_2 = std::find(flag.regions.begin(), flag.regions.end(), 2u) != flag.regions.end();
+        if (flag.type.flags == (kRegionWater | kRegionZoneLine)) {
+            ++combined;
+            EXPECT_EQ(flag.regions, std::vector<uint32_t>{2});
+            ASSERT_TRUE(flag.type.zone_line);
+            EXPECT_EQ(flag.type.zone_line->zone_point, 0u);
+        } else {
+            EXPECT_FALSE(holds_2) << "region 2 is in no other list (type flags " << flag.type.flags << ")";
+        }
+    }
+    EXPECT_EQ(combined, 1);
+    const Zone b = read_back(s3d);
+    EXPECT_EQ(b.regions[2].flags, kRegionZoneLine | kRegionWater);
+    EXPECT_EQ(b.regions[2].zone_line, 0);
+    EXPECT_EQ(b.zone_lines.size(), 1u) << "the empty DRNTP and the WTNTP of one destination are one line";
+    EXPECT_EQ(write_eq_zone(b, "zone"), s3d) << "and it writes back the same";
+    EXPECT_EQ(b.regions[1].flags, kRegionWater | kRegionSlime) << "plain water stays WT_ZONE";
+}
+
+// Every 0x36 carries its vertices' box, relative to its centre (WillEQ adds the centre).
+TEST(EqZoneRoundTrip, MeshBoxesHoldTheirVerticesTightly)
+{
+    const eq::WldFile wld = zone_wld(write_eq_zone(hand_zone(), "zone"));
+    int meshes = 0;
+    for (uint32_t n = 1; n <= wld.fragments.size(); ++n) {
+        if (wld.fragments[n - 1].type != eq::kWldMesh)
+            continue;
+        ++meshes;
+        const eq::WldMesh mesh = eq::parse_mesh(wld, n);
+        ASSERT_FALSE(mesh.positions.empty());
+        const glm::vec3 lo = mesh.center + mesh.min, hi = mesh.center + mesh.max;
+        glm::vec3 seen_lo(1e30f), seen_hi(-1e30f);
+        for (const glm::vec3& p : mesh.positions) {
+            seen_lo = glm::min(seen_lo, p);
+            seen_hi = glm::max(seen_hi, p);
+        }
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(lo[k], seen_lo[k], 1.0 / 64) << "fragment " << n << " axis " << k;
+            EXPECT_NEAR(hi[k], seen_hi[k], 1.0 / 64) << "fragment " << n << " axis " << k;
+            EXPECT_LE(lo[k], hi[k]);
+        }
+        EXPECT_GT(glm::length(hi - lo), 0.0f) << "not the zero box";
+    }
+    EXPECT_GT(meshes, 0);
 }
 
 // ---- Quake maps ----

@@ -537,17 +537,23 @@ std::string zone_line_target(const std::optional<WldZoneLineTarget>& target)
            std::to_string(target->heading);
 }
 
+// One zone line per destination: a DRNTP and a WTNTP (a zone line in water) with the same
+// destination are one line whose regions are in either list.
 void EqZoneLoader::add_zone_line(const WldRegionFlag& flag)
 {
-    ZoneLine line;
-    line.target = zone_line_target(flag.type.zone_line);
-    const auto index = static_cast<int32_t>(zone_.zone_lines.size());
+    const std::string target = zone_line_target(flag.type.zone_line);
+    auto same = std::find_if(zone_.zone_lines.begin(), zone_.zone_lines.end(),
+                             [&](const ZoneLine& l) { return flag.type.zone_line && l.target == target; });
+    if (same == zone_.zone_lines.end()) {
+        zone_.zone_lines.push_back({target, {}});
+        same = zone_.zone_lines.end() - 1;
+    }
+    const auto index = static_cast<int32_t>(same - zone_.zone_lines.begin());
     for (const uint32_t r : flag.regions) {
         zone_.regions[r].zone_line = index;
         if (!zone_.regions[r].bounds.empty())
-            line.bounds.grow(zone_.regions[r].bounds);
+            same->bounds.grow(zone_.regions[r].bounds);
     }
-    zone_.zone_lines.push_back(std::move(line));
 }
 
 void EqZoneLoader::read_flags()

@@ -427,7 +427,13 @@ WrittenMesh write_region_mesh(WldBuilder& b, const Zone& zone, uint32_t r, int32
     std::snprintf(name, sizeof name, "R%06u_DMSPRITEDEF", r + 1);
     mesh.name_ref = b.strings.add(name);
     mesh.material_palette_ref = palette;
-    mesh.max_distance = mesh_bounds(mesh).max_distance;
+    // The box as min/max relative to the centre, as WillEQ reads them (it adds the centre; the
+    // spec's open question 7: LanternExtractor's notes call them absolute). Readers that build
+    // distance boxes from these need them; zero (what many original zone meshes hold) gives none.
+    const WldMeshBounds bounds = mesh_bounds(mesh);
+    mesh.max_distance = bounds.max_distance;
+    mesh.min = bounds.min - mesh.center;
+    mesh.max = bounds.max - mesh.center;
     return {b.add(kWldMesh, write_mesh(mesh)), vertex_sphere(mesh.positions)};
 }
 
@@ -550,29 +556,51 @@ size_t zone_line_of_regions(const Zone& zone, std::vector<int64_t>& line_of)
     return extra + (any_extra ? 1 : 0);
 }
 
+// A zone line in water or lava is one 0x29 named WTNTP... or LANTP... (the combined names real
+// zones use, read as water or lava + zone line by LX, ES and WillEQ, as water or lava by ZU's
+// two-letter prefixes), not a WT_ZONE plus a DRNTP list: a reader that keeps one type per
+// region would keep only the last one it read.
+uint32_t combined_liquid(const Region& region, int64_t line)
+{
+    if (line < 0)
+        return 0;
+    if (region.flags & kRegionWater)
+        return kRegionWater;
+    if (region.flags & kRegionLava)
+        return kRegionLava;
+    return 0;
+}
+
 void write_flags(WldBuilder& b, const Zone& zone)
 {
-    for (const FlagType& type : kFlagTypes) {
-        std::vector<uint32_t> regions;
-        for (uint32_t r = 0; r < zone.regions.size(); ++r)
-            if (zone.regions[r].flags & type.flag)
-                regions.push_back(r);
-        if (!regions.empty())
-            add_flag(b, type.name, std::move(regions));
-    }
     std::vector<int64_t> line_of;
     const size_t lines = zone_line_of_regions(zone, line_of);
     if (lines > size_t{kMaxZonePoint} + 1)
         refuse(std::to_string(lines) + " zone lines; a DRNTP name holds zone points up to 999999");
-    for (size_t line = 0; line < lines; ++line) {
+    for (const FlagType& type : kFlagTypes) {
         std::vector<uint32_t> regions;
         for (uint32_t r = 0; r < zone.regions.size(); ++r)
-            if (line_of[r] == int64_t(line))
+            if ((zone.regions[r].flags & type.flag) && combined_liquid(zone.regions[r], line_of[r]) != type.flag)
                 regions.push_back(r);
-        char name[32];
-        std::snprintf(name, sizeof name, "DRNTP00255%06zu_ZONE", line);
-        add_flag(b, name, std::move(regions)); // written even when empty: the line's index survives
+        if (!regions.empty())
+            add_flag(b, type.name, std::move(regions));
     }
+    struct LineKind {
+        uint32_t liquid;
+        const char* prefix;
+    };
+    for (size_t line = 0; line < lines; ++line)
+        for (const LineKind kind : {LineKind{0, "DRNTP"}, LineKind{kRegionWater, "WTNTP"}, LineKind{kRegionLava, "LANTP"}}) {
+            std::vector<uint32_t> regions;
+            for (uint32_t r = 0; r < zone.regions.size(); ++r)
+                if (line_of[r] == int64_t(line) && combined_liquid(zone.regions[r], line_of[r]) == kind.liquid)
+                    regions.push_back(r);
+            if (kind.liquid != 0 && regions.empty())
+                continue;
+            char name[32];
+            std::snprintf(name, sizeof name, "%s00255%06zu_ZONE", kind.prefix, line);
+            add_flag(b, name, std::move(regions)); // DRNTP even when empty: the line's index survives
+        }
 }
 
 // ---- What the archive cannot keep ----
