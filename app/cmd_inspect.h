@@ -29,6 +29,7 @@ struct InspectArguments {
     std::string size = "1280x800";
     std::string camera;
     std::string cull = "pvs+frustum";
+    float far = 0.0f; // > 0: far clip and the culler's distance stage
     bool report_fps = false;
     std::string overlays = "zonelines,frustum";
     bool pick_centre = false;

@@ -32,6 +32,7 @@ struct RenderOptions {
     float fov = 70.0f;
     std::string size = "800x600";
     std::string mode = "textured";
+    float far = 0.0f; // > 0: far clip and the culler's distance stage
     std::string cull = "pvs+frustum";
     std::string pvs = "baked";
     std::string output;
@@ -61,6 +62,8 @@ int run_render(const RenderOptions& options)
             c.pitch_degrees = values[4];
             c.fov_y_degrees = options.fov;
             c.aspect = float((*size)[0]) / float((*size)[1]);
+            if (options.far > 0.0f)
+                c.far_distance = options.far;
             return c;
         };
         const Camera camera = make_camera(*camera_values);
@@ -72,14 +75,16 @@ int run_render(const RenderOptions& options)
             std::fprintf(stderr, "pvscope: PVS %s\n", source.note.c_str());
         Culler culler(zone, source.pvs);
         ui::SoftwareRenderer renderer((*size)[0], (*size)[1]);
+        CullOptions cull_options{*cull_mode, true};
+        cull_options.distance_stage = options.far > 0.0f;
         const ui::CulledFrame frame =
-            ui::render_culled(renderer, culler, camera, cull_camera, {*cull_mode, true}, *mode);
+            ui::render_culled(renderer, culler, camera, cull_camera, cull_options, *mode);
         const CullStats& s = frame.cull;
         const ui::Image& image = frame.image;
         ui::save_png(image, options.output);
 
         // The stats are the culling camera's: the locked one when --cull-camera is given.
-        const double cull_ms = (s.lookup_us + s.pvs_us + s.frustum_us) / 1000.0;
+        const double cull_ms = s.cull_us() / 1000.0;
         const ui::RenderStats& r = renderer.last_stats();
         const double render_ms = r.scene_ms + r.draw_ms;
         const char* place = s.camera == CameraPlace::InRegion ? "" : s.camera == CameraPlace::InSolid ? " (in solid)" : " (outside)";
@@ -89,6 +94,9 @@ int run_render(const RenderOptions& options)
                         double(cull_camera->yaw_degrees), double(cull_camera->pitch_degrees));
         if (zone.view_grid)
             std::printf("cell %d | ", s.cell);
+        if (options.far > 0.0f)
+            std::printf("far %g: regions after pvs %u -> distance %u (%.3f us) | ", double(options.far),
+                        s.regions_after_pvs, s.regions_after_distance, s.distance_us);
         std::printf("region %d%s | cull %s%s | regions %u -> pvs %u -> frustum %u | triangles %llu -> pvs %llu -> "
                     "frustum %llu | cull %.3f ms | render %.1f ms (scene %.1f, draw %.1f) | %ux%u %s -> %s\n",
                     s.region, place, cull_mode_name(*cull_mode), s.pvs_used ? "" : " (no pvs stage)", s.regions_total,
@@ -127,6 +135,9 @@ void register_render_command(CLI::App& app, int& exit_code)
     cmd->add_option("--fov", options->fov, "Vertical field of view in degrees")
         ->capture_default_str()
         ->check(CLI::Range(1.0f, 179.0f));
+    cmd->add_option("--far", options->far, "Far clip distance in zone units (EverQuest clips at the zone's far plane / fog distance): the camera's far plane and a distance stage in the culler that drops regions beyond its reach. 0: none")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT (1..8192 each)")
         ->capture_default_str()
         ->check(size_validator());

@@ -35,6 +35,7 @@ struct WalkCommandOptions {
     std::string pvs = "baked";
     std::string size = "320x240";
     float fov = 70.0f;
+    float far = 0.0f; // > 0: far clip and the culler's distance stage
     std::string csv;
     bool render_time = false;
 };
@@ -80,8 +81,8 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
     std::ofstream out(file);
     if (!out)
         throw FileError(file, 0, "cannot create the CSV file");
-    out << "camera,x,y,z,yaw,pitch,region,camera_place,lookup_us,pvs_us,frustum_us,regions_total,regions_after_pvs,"
-           "regions_drawn,triangles_total,triangles_after_pvs,triangles_drawn,render_ms,covered_pixels,"
+    out << "camera,x,y,z,yaw,pitch,region,camera_place,lookup_us,pvs_us,distance_us,frustum_us,regions_total,"
+           "regions_after_pvs,regions_after_distance,regions_drawn,triangles_total,triangles_after_pvs,triangles_drawn,render_ms,covered_pixels,"
            "raster_popping_pixels,popping_cracks,popping_unknown,popping_grazing,popping_unlisted,popping_confirmed,popping_regions,needed_triangles,"
            "triangle_overdraw,region_overdraw\n";
     const char* places[] = {"region", "solid", "outside"};
@@ -95,8 +96,9 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
         }
         out << i << ',' << r.camera.position.x << ',' << r.camera.position.y << ',' << r.camera.position.z << ','
             << r.camera.yaw_degrees << ',' << r.camera.pitch_degrees << ',' << r.cull.region << ','
-            << places[int(r.cull.camera)] << ',' << r.cull.lookup_us << ',' << r.cull.pvs_us << ',' << r.cull.frustum_us
-            << ',' << r.cull.regions_total << ',' << r.cull.regions_after_pvs << ',' << r.cull.regions_after_frustum
+            << places[int(r.cull.camera)] << ',' << r.cull.lookup_us << ',' << r.cull.pvs_us << ',' << r.cull.distance_us
+            << ',' << r.cull.frustum_us << ',' << r.cull.regions_total << ',' << r.cull.regions_after_pvs << ','
+            << r.cull.regions_after_distance << ',' << r.cull.regions_after_frustum
             << ',' << r.cull.triangles_total << ',' << r.cull.triangles_after_pvs << ','
             << r.cull.triangles_after_frustum << ',' << r.render_ms << ',' << r.accuracy.covered_pixels << ','
             << r.accuracy.popping_pixels << ',' << r.popping_cracks << ',' << r.popping_unknown << ',' << r.popping_grazing << ',' << r.popping_unlisted << ',' << r.popping_confirmed << ','
@@ -107,11 +109,15 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
 
 void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOptions& o)
 {
-    std::vector<double> cull_us, regions, triangles, tri_over, region_over, render_ms;
+    std::vector<double> cull_us, distance_us, after_pvs, after_distance, regions, triangles, tri_over, region_over,
+        render_ms;
     uint64_t raster_popping = 0, confirmed = 0, cracks = 0, unknown = 0, grazing = 0, unlisted = 0, popping_cameras = 0,
              outside = 0;
     for (const ui::WalkRow& r : rows) {
-        cull_us.push_back(r.cull.lookup_us + r.cull.pvs_us + r.cull.frustum_us);
+        cull_us.push_back(r.cull.cull_us());
+        distance_us.push_back(r.cull.distance_us);
+        after_pvs.push_back(r.cull.regions_after_pvs);
+        after_distance.push_back(r.cull.regions_after_distance);
         regions.push_back(r.cull.regions_after_frustum);
         triangles.push_back(double(r.cull.triangles_after_frustum));
         tri_over.push_back(r.accuracy.triangle_overdraw());
@@ -133,6 +139,11 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
         std::printf("  %-22s %12.3f %12.3f\n", name, percentile(v, 0.5), percentile(v, 0.99));
     };
     line("cull time (us)", cull_us);
+    if (o.far > 0.0f) {
+        line("  of which distance", distance_us);
+        line("regions after pvs", after_pvs);
+        line("regions within far", after_distance);
+    }
     line("regions drawn", regions);
     line("triangles drawn", triangles);
     line("triangle overdraw", tri_over);
@@ -182,6 +193,8 @@ int run_walk(const WalkCommandOptions& o)
         Camera lens;
         lens.fov_y_degrees = o.fov;
         lens.aspect = float((*size)[0]) / float((*size)[1]);
+        if (o.far > 0.0f)
+            lens.far_distance = o.far;
         std::vector<Camera> cameras;
         if (o.camera_path == "regions")
             cameras = cameras_visiting_every_region(zone, o.seed, lens);
@@ -198,6 +211,7 @@ int run_walk(const WalkCommandOptions& o)
         options.width = (*size)[0];
         options.height = (*size)[1];
         options.time_culled_render = o.render_time;
+        options.distance_stage = o.far > 0.0f;
         std::vector<int32_t> cached_regions; // the stale cache's answer per camera, in walk order
         if (o.region_cache > 0.0f) {
             StaleRegionCache cache(zone, o.region_cache);
@@ -267,6 +281,9 @@ void register_walk_command(CLI::App& app, int& exit_code)
         ->capture_default_str();
     cmd->add_option("--size", o->size, "ID-buffer size WIDTHxHEIGHT")->capture_default_str()->check(size_validator());
     cmd->add_option("--fov", o->fov, "Vertical field of view in degrees")->capture_default_str();
+    cmd->add_option("--far", o->far, "Far clip distance in zone units (EverQuest clips at the zone's far plane / fog distance): the camera's far plane and a distance stage in the culler that drops regions beyond its reach. 0: none")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--csv", o->csv, "Write one row per camera to this CSV file");
     cmd->add_flag("--render-time", o->render_time, "Also time a textured render of each culled frame");
     cmd->callback([o, &exit_code] { exit_code = run_walk(*o); });

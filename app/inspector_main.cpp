@@ -26,6 +26,7 @@ pvs::gui::InspectorOptions inspector_options(const pvs::app::InspectArguments& a
     if (!a.camera.empty())
         options.camera = app::parse_camera_argument(a.camera);
     options.cull_mode = parse_cull_mode(a.cull).value_or(CullMode::PvsFrustum);
+    options.far_clip = a.far;
     options.report_fps = a.report_fps;
     options.overlays = app::parse_overlays(a.overlays).value_or(ui::OverlaySettings{});
     options.overlays.hidden_lines = a.hidden_lines == "hidden"  ? ui::HiddenLines::Hidden

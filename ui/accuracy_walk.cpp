@@ -143,6 +143,7 @@ std::vector<std::vector<WalkRow>> run_accuracy_walks(const Zone& zone, std::span
             WalkRow row;
             row.camera = camera;
             CullOptions cull_options{options.mode, true};
+            cull_options.distance_stage = options.distance_stage;
             if (i < options.forced_regions.size())
                 cull_options.forced_region = options.forced_regions[i];
             row.cull = cullers[p]->cull(camera, cull_options, visible);

@@ -53,6 +53,7 @@ struct WalkOptions {
     CullMode mode = CullMode::PvsFrustum;
     uint32_t width = 320, height = 240;
     bool time_culled_render = false;
+    bool distance_stage = false; // CullOptions::distance_stage (the cameras' far_distance is the far clip)
     SkyPortals sky = SkyPortals::SkyToSky; // the content rule of the sight-line check
     // One region per camera to cull from instead of the culler's own tree walk (CullOptions::
     // forced_region): a stale region cache being measured. Empty: the culler's walk.

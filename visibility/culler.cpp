@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace pvs {
 
@@ -98,6 +100,30 @@ bool Culler::far_plane_reaches_everything(const Camera& camera) const
     return glm::dot(d, d) < camera.far_distance * camera.far_distance;
 }
 
+// The distance the far plane reaches from the eye: at the frustum's far corners.
+static double far_plane_reach(const Camera& camera)
+{
+    const double tan_y = std::tan(glm::radians(double(camera.fov_y_degrees)) * 0.5);
+    const double tan_x = tan_y * double(camera.aspect);
+    return double(camera.far_distance) * std::sqrt(1.0 + tan_x * tan_x + tan_y * tan_y);
+}
+
+// Keeps, in order, the first `count` regions whose box is within the far plane's reach.
+size_t Culler::keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count) const
+{
+    const glm::vec3 eye = camera.position;
+    const double reach = far_plane_reach(camera);
+    const float limit = float(reach * reach) * (1.0f + 1e-5f); // float rounding: never drop a reached box
+    size_t kept = 0;
+    for (size_t i = 0; i < count; ++i) {
+        const Aabb& box = zone_->regions[regions[i]].bounds;
+        const glm::vec3 outside = glm::max(glm::max(box.min - eye, eye - box.max), glm::vec3(0.0f));
+        regions[kept] = regions[i];
+        kept += size_t(glm::dot(outside, outside) <= limit);
+    }
+    return kept;
+}
+
 CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::vector<uint32_t>& visible)
 {
     CullStats stats;
@@ -144,8 +170,9 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     }
     stats.pvs_us = clock.lap();
 
-    // Stage 3: the frustum, over the row's regions (or all of them). Every candidate is
-    // written and the count advances only for the ones inside: no branch on the test's answer.
+    // Stage 3 (optional): distance. The row's regions (or all of them) within the far plane's
+    // reach, into `visible`; the frustum then tests those in place.
+    const bool want_distance = options.distance_stage;
     const bool want_frustum = options.mode == CullMode::Frustum || options.mode == CullMode::PvsFrustum;
     std::optional<FrustumBoxes::PlaneGroups> planes;
     if (want_frustum) {
@@ -155,9 +182,12 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     }
     visible.resize(stats.regions_after_pvs);
     size_t kept = 0;
+    // The first stage after the PVS: every candidate is written and the count advances only for
+    // the ones kept, no branch on the test's answer. With a distance stage the frustum runs after.
+    const bool frustum_now = planes && !want_distance;
     const auto consider = [&](uint32_t r) {
         visible[kept] = r;
-        kept += planes ? size_t(boxes_.intersects(r, *planes)) : 1u;
+        kept += frustum_now ? size_t(boxes_.intersects(r, *planes)) : 1u;
     };
     if (stats.pvs_used) {
         bits::for_each_set(row, [&](size_t r) {
@@ -169,15 +199,31 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
         });
         if (add_own_region)
             consider(uint32_t(stats.region));
-    } else if (planes) {
+    } else if (frustum_now) {
         kept = boxes_.collect_all(*planes, visible.data()); // every region, four boxes at a time
     } else {
         for (uint32_t r = 0; r < region_count; ++r)
             consider(r);
     }
+    if (want_distance) {
+        stats.pvs_us += clock.lap(); // walking the row's bits is the PVS stage's work
+        kept = keep_near(camera, visible, kept);
+        stats.regions_after_distance = uint32_t(kept);
+        stats.distance_us = clock.lap();
+        if (planes) {
+            size_t inside = 0;
+            for (size_t i = 0; i < kept; ++i) {
+                visible[inside] = visible[i];
+                inside += size_t(boxes_.intersects(visible[i], *planes));
+            }
+            kept = inside;
+        }
+    }
     visible.resize(kept);
     stats.frustum_us = clock.lap();
     stats.regions_after_frustum = static_cast<uint32_t>(visible.size());
+    if (!want_distance)
+        stats.regions_after_distance = stats.regions_after_pvs;
 
     if (options.count_triangles)
         count_stage_triangles(row, stats.region, stats, visible);

@@ -1,5 +1,6 @@
 // The runtime culler: camera -> region (grid-started BSP walk) -> that region's PVS row ->
-// frustum test of each PVS-visible region's bounds -> the regions to draw.
+// distance test (optional: EverQuest clients clip at the zone's far plane / fog distance) ->
+// frustum test of each remaining region's bounds -> the regions to draw.
 //
 // The frustum stage tests the row's regions' boxes branch-free, four planes at a time
 // (FrustumBoxes; the same answers as Frustum::intersects), and uses only the four side planes
@@ -47,13 +48,15 @@ struct CullStats {
     bool pvs_used = false;        // false: no PVS, a mode without it, or the camera not in a region
     uint32_t regions_total = 0;
     uint32_t regions_after_pvs = 0;
+    uint32_t regions_after_distance = 0; // = regions_after_pvs without CullOptions::far_distance
     uint32_t regions_after_frustum = 0; // = regions drawn
     // Distinct faces' triangles (a face listed by several regions counts once); filled only
     // when CullOptions::count_triangles is set.
     uint64_t triangles_total = 0;
     uint64_t triangles_after_pvs = 0;
     uint64_t triangles_after_frustum = 0;
-    double lookup_us = 0, pvs_us = 0, frustum_us = 0;
+    double lookup_us = 0, pvs_us = 0, distance_us = 0, frustum_us = 0;
+    double cull_us() const { return lookup_us + pvs_us + distance_us + frustum_us; }
 };
 
 struct CullOptions {
@@ -68,6 +71,12 @@ struct CullOptions {
     // (CameraPlace::Outside). In a grid zone the value is a view cell (its rows are cells). Unset:
     // the tree walk (the grid lookup), as always.
     std::optional<int32_t> forced_region = std::nullopt;
+    // A stage of its own after the PVS, for clients that clip at a far plane or fog distance
+    // (EverQuest: the zone's far clip): drops every region whose box lies beyond the reach of the
+    // camera's far plane (Camera::far_distance), a sphere of radius far_distance / cos(the half
+    // diagonal of the field of view) about the eye. Nothing the far plane lets through is
+    // dropped, and one test per region is cheaper than the frustum's six planes.
+    bool distance_stage = false;
 };
 
 class Culler {
@@ -85,6 +94,7 @@ private:
     void count_stage_triangles(std::span<const uint64_t> row, int32_t region, CullStats& stats,
                                const std::vector<uint32_t>& visible);
     bool far_plane_reaches_everything(const Camera& camera) const;
+    size_t keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count) const;
 
     const Zone* zone_;
     const Pvs* pvs_;

@@ -5,7 +5,10 @@
 #include "visibility/bit_row.h"
 #include "visibility/culler.h"
 #include "visibility/region_lookup.h"
+#include "wld/gen/generate_outdoor_zone.h"
 #include "wld/zone_file.h"
+
+#include <glm/gtc/matrix_inverse.hpp>
 
 #include <gtest/gtest.h>
 
@@ -229,6 +232,109 @@ TEST_F(CullE1m1, CameraExactlyOnASplitPlaneGetsTheTieRulesRegion)
     const CullStats pvs_only = culler.cull(camera, {CullMode::Pvs, false}, visible);
     EXPECT_EQ(pvs_only.region, expected.region);
     EXPECT_TRUE(std::binary_search(visible.begin(), visible.end(), uint32_t(expected.region)));
+}
+
+
+// ---- The distance stage (CullOptions::distance_stage) on an outdoor zone ----
+
+// The far plane's reach, from the frustum itself: the farthest of its corners, unprojected from
+// clip space (not the culler's formula).
+float far_corner_distance(const Camera& camera)
+{
+    const glm::mat4 inverse = glm::inverse(camera.view_projection());
+    float farthest = 0.0f;
+    for (float x : {-1.0f, 1.0f})
+        for (float y : {-1.0f, 1.0f}) {
+            const glm::vec4 p = inverse * glm::vec4(x, y, 1.0f, 1.0f);
+            farthest = std::max(farthest, glm::length(glm::vec3(p) / p.w - camera.position));
+        }
+    return farthest;
+}
+
+float box_distance(const Aabb& box, glm::vec3 p)
+{
+    const glm::vec3 d = glm::max(glm::max(box.min - p, p - box.max), glm::vec3(0.0f));
+    return glm::length(d);
+}
+
+class CullOutdoor : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { zone_ = new Zone(gen::generate_outdoor_zone({})); }
+    static void TearDownTestSuite() { delete zone_; }
+    static std::vector<Camera> cameras(size_t count, float far)
+    {
+        std::vector<Camera> out;
+        std::mt19937 rng(11);
+        std::uniform_int_distribution<size_t> region(0, zone_->region_count() - 1);
+        std::uniform_real_distribution<float> yaw(0.0f, 360.0f), pitch(-30.0f, 30.0f);
+        while (out.size() < count) {
+            Camera c;
+            c.position = zone_->regions[region(rng)].bounds.center();
+            c.yaw_degrees = yaw(rng);
+            c.pitch_degrees = pitch(rng);
+            c.far_distance = far;
+            out.push_back(c);
+        }
+        return out;
+    }
+    static Zone* zone_;
+};
+Zone* CullOutdoor::zone_ = nullptr;
+
+TEST_F(CullOutdoor, DistanceStageKeepsExactlyTheRegionsWithinTheFarPlanesReach)
+{
+    Culler culler(*zone_, nullptr);
+    std::vector<uint32_t> visible;
+    for (const Camera& camera : cameras(20, 640.0f)) {
+        CullOptions options{CullMode::None, false};
+        options.distance_stage = true;
+        const CullStats stats = culler.cull(camera, options, visible);
+        const float reach = far_corner_distance(camera);
+        std::vector<uint32_t> expected;
+        for (uint32_t r = 0; r < zone_->region_count(); ++r) {
+            const float d = box_distance(zone_->regions[r].bounds, camera.position);
+            ASSERT_TRUE(std::abs(d - reach) > 0.01f) << "no box this close to the reach: the test would be ambiguous";
+            if (d < reach)
+                expected.push_back(r);
+        }
+        EXPECT_EQ(visible, expected);
+        EXPECT_EQ(stats.regions_after_distance, expected.size());
+        EXPECT_LT(expected.size(), zone_->region_count() / 4) << "a far clip of ten cells drops most of the zone";
+    }
+}
+
+TEST_F(CullOutdoor, DistanceStageNeverDropsARegionWithAPointInTheFrustum)
+{
+    Culler culler(*zone_, nullptr);
+    std::vector<uint32_t> with_stage, without_stage;
+    size_t checked = 0; // points that fell in open cells
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> ndc(-1.0f, 1.0f);
+    for (const Camera& camera : cameras(20, 640.0f)) {
+        CullOptions options{CullMode::Frustum, false};
+        culler.cull(camera, options, without_stage);
+        options.distance_stage = true;
+        const CullStats stats = culler.cull(camera, options, with_stage);
+        EXPECT_LE(with_stage.size(), without_stage.size());
+        EXPECT_LE(stats.regions_after_frustum, stats.regions_after_distance);
+        // Points of the view volume, out to the far plane, and the regions they lie in.
+        const glm::mat4 inverse = glm::inverse(camera.view_projection());
+        for (int i = 0; i < 2000; ++i) {
+            const glm::vec4 p = inverse * glm::vec4(ndc(rng), ndc(rng), std::abs(ndc(rng)), 1.0f);
+            const glm::vec3 point = glm::vec3(p) / p.w;
+            const PointLocation at = locate_point(zone_->tree, point);
+            // The tree sends points beyond the world's box to boundary leaves: only points in
+            // their region's box count.
+            if (at.in_region() && zone_->regions[size_t(at.region)].bounds.contains(point)) {
+                ++checked;
+                ASSERT_TRUE(std::binary_search(with_stage.begin(), with_stage.end(), uint32_t(at.region)))
+                    << "region " << at.region << " has a point in the view volume; distance "
+                    << box_distance(zone_->regions[size_t(at.region)].bounds, camera.position) << ", reach "
+                    << far_corner_distance(camera);
+            }
+        }
+    }
+    EXPECT_GT(checked, 10000u);
 }
 
 } // namespace

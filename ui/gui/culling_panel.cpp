@@ -32,6 +32,7 @@ void draw_counts(const InspectorState& state)
     ImGui::TableSetupColumn("triangles");
     ImGui::TableSetupColumn("us");
     ImGui::TableHeadersRow();
+    constexpr uint64_t kNotCounted = UINT64_MAX;
     const auto stage = [](const char* name, uint32_t regions, uint64_t triangles, double us) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -39,12 +40,17 @@ void draw_counts(const InspectorState& state)
         ImGui::TableNextColumn();
         ImGui::Text("%u", regions);
         ImGui::TableNextColumn();
-        ImGui::Text("%llu", static_cast<unsigned long long>(triangles));
+        if (triangles == kNotCounted)
+            ImGui::TextUnformatted("-");
+        else
+            ImGui::Text("%llu", static_cast<unsigned long long>(triangles));
         ImGui::TableNextColumn();
         ImGui::Text("%.1f", us);
     };
     stage("lookup", s.regions_total, s.triangles_total, s.lookup_us);
     stage("PVS", s.regions_after_pvs, s.triangles_after_pvs, s.pvs_us);
+    if (state.far_clip > 0.0f)
+        stage("distance", s.regions_after_distance, kNotCounted, s.distance_us);
     stage("frustum", s.regions_after_frustum, s.triangles_after_frustum, s.frustum_us);
     ImGui::EndTable();
     const ui::RenderStats& r = state.last_render();
@@ -83,6 +89,8 @@ void draw_switches(InspectorState& state)
         if (ImGui::RadioButton(cull_mode_name(mode), state.cull_mode == mode))
             state.cull_mode = mode;
     }
+    ImGui::SetNextItemWidth(160.0f);
+    ImGui::DragFloat("far clip (0: off)", &state.far_clip, 16.0f, 0.0f, 65536.0f, "%.0f");
     ImGui::TextDisabled("draw");
     first = true;
     for (const char* name : kRenderModeNames)
@@ -131,7 +139,7 @@ void draw_culling_panel(InspectorState& state, CullingPanel& panel)
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
             ImGui::TextWrapped("%llu frames since opened: mean cull %.1f us, render %.1f ms, %.1f regions drawn",
                                static_cast<unsigned long long>(t.frames),
-                               (t.lookup_us + t.pvs_us + t.frustum_us) / double(t.frames),
+                               (t.lookup_us + t.pvs_us + t.distance_us + t.frustum_us) / double(t.frames),
                                t.render_ms / double(t.frames), double(t.regions_drawn) / double(t.frames));
             ImGui::PopStyleColor();
         }

@@ -12,10 +12,10 @@ namespace pvs::gui {
 
 // One frame's costs, in the units the panels show.
 struct FrameTimes {
-    float lookup_us = 0, pvs_us = 0, frustum_us = 0; // the culler's stages
-    float render_ms = 0;                             // software render (draw + read-back)
+    float lookup_us = 0, pvs_us = 0, distance_us = 0, frustum_us = 0; // the culler's stages
+    float render_ms = 0; // software render (draw + read-back)
 
-    float cull_us() const { return lookup_us + pvs_us + frustum_us; }
+    float cull_us() const { return lookup_us + pvs_us + distance_us + frustum_us; }
 };
 
 // ~8 seconds at 30 frames per second: enough for the culling panel's plot.
@@ -44,7 +44,7 @@ private:
 // Sums and maxima over every frame since the zone was opened; means are sum / frames.
 struct CullTotals {
     uint64_t frames = 0;
-    double lookup_us = 0, pvs_us = 0, frustum_us = 0, render_ms = 0;
+    double lookup_us = 0, pvs_us = 0, distance_us = 0, frustum_us = 0, render_ms = 0;
     double max_cull_us = 0, max_render_ms = 0;
     uint64_t regions_after_pvs = 0, regions_drawn = 0;
     uint64_t triangles_after_pvs = 0, triangles_drawn = 0;

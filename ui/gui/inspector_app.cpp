@@ -144,7 +144,7 @@ struct FrameTimer {
         last = now;
         render_ms.push_back(state.last_render().draw_ms);
         const CullStats& c = state.last_cull();
-        cull_us.push_back(c.lookup_us + c.pvs_us + c.frustum_us);
+        cull_us.push_back(c.cull_us());
     }
     void print(const InspectorState& state) const
     {
@@ -275,6 +275,7 @@ int run_inspector(const InspectorOptions& options)
         return 1;
     }
     state.cull_mode = options.cull_mode;
+    state.far_clip = options.far_clip;
     state.overlays = options.overlays;
     state.set_memory_probe(options.memory_probe);
     if (options.bake)

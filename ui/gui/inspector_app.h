@@ -26,6 +26,7 @@ struct InspectorOptions {
     uint32_t width = 1280, height = 800;
     std::optional<std::array<float, 5>> camera; // x, y, z, yaw, pitch; else the zone's start view
     CullMode cull_mode = CullMode::PvsFrustum;
+    float far_clip = 0.0f; // InspectorState::far_clip
     // When set: draw `frames` frames, write the whole window (glReadPixels of the back buffer)
     // to this PNG and return, without waiting for the user. For tests and the README.
     std::string screenshot;

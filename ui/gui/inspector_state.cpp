@@ -271,6 +271,7 @@ const CullStats& InspectorState::frame()
     if (!zone_)
         return last_cull_;
     view_.aspect = float(width_) / float(height_);
+    view_.far_distance = far_clip > 0.0f ? far_clip : Camera{}.far_distance;
     if (!locked_)
         cull_ = view_;
 
@@ -279,7 +280,9 @@ const CullStats& InspectorState::frame()
     take_finished_portals();
     take_finished_explanation();
     ++frame_number_; // first: the overlays' per-frame caches key on it
-    last_cull_ = culler_->cull(cull_, {cull_mode, true}, visible_);
+    CullOptions cull_options{cull_mode, true};
+    cull_options.distance_stage = far_clip > 0.0f;
+    last_cull_ = culler_->cull(cull_, cull_options, visible_);
     update_after_pvs();
     try {
         ensure_renderer();
@@ -304,12 +307,14 @@ const CullStats& InspectorState::frame()
     }
 
     const CullStats& s = last_cull_;
-    const FrameTimes times{float(s.lookup_us), float(s.pvs_us), float(s.frustum_us), float(last_render_.draw_ms)};
+    const FrameTimes times{float(s.lookup_us), float(s.pvs_us), float(s.distance_us), float(s.frustum_us),
+                           float(last_render_.draw_ms)};
     history_.push(times);
     CullTotals& t = totals_;
     ++t.frames;
     t.lookup_us += s.lookup_us;
     t.pvs_us += s.pvs_us;
+    t.distance_us += s.distance_us;
     t.frustum_us += s.frustum_us;
     t.render_ms += last_render_.draw_ms;
     t.max_cull_us = std::max(t.max_cull_us, double(times.cull_us()));

@@ -143,6 +143,9 @@ public:
 
     // ---- Frame ---------------------------------------------------------------------------------
     CullMode cull_mode = CullMode::PvsFrustum;
+    // > 0: the view camera's far plane and the culler's distance stage (CullOptions::
+    // distance_stage), as an EverQuest client's far clip; 0: neither.
+    float far_clip = 0.0f;
     ui::RenderMode render_mode = ui::RenderMode::Textured;
 
     // The picture's size in pixels (1 .. 8192 each, clamped); the view camera's aspect follows.
