@@ -102,6 +102,28 @@ TEST(TerrainLevel, HillsHideOnePartOfTheGroundFromAnother)
     EXPECT_LT(hidden, pairs) << "and some can";
 }
 
+// Small zones squeeze every placement range (24 columns once crashed on an empty one): every
+// size and seed gives a grid whose ground is solid below and that has the features.
+TEST(TerrainLevel, EverySizeFromTheSmallestBuildsTheFeatures)
+{
+    for (int columns : {kMinTerrainColumns, 25, 27, 31, 40, 64, 100})
+        for (uint64_t seed = 1; seed <= 6; ++seed) {
+            TerrainFeatures f;
+            const VoxelLevel level = make_terrain_level({columns, kMinTerrainHeight + int(seed % 3), seed}, &f);
+            ASSERT_EQ(level.cells.size(), size_t(columns) * size_t(columns) * size_t(level.dims.z));
+            size_t water = 0, open_cells = 0;
+            for (Cell c : level.cells) {
+                water += c == Cell::Water ? 1 : 0;
+                open_cells += open(c) ? 1 : 0;
+            }
+            EXPECT_GT(water, 0u) << columns << " columns, seed " << seed;
+            EXPECT_GT(open_cells, level.cells.size() / 4) << columns << " columns, seed " << seed;
+            for (int y = 0; y < columns; ++y)
+                for (int x = 0; x < columns; ++x)
+                    ASSERT_EQ(level.at(x, y, 0), Cell::Solid) << "the bottom layer is ground";
+        }
+}
+
 TEST(OutdoorZone, OneRegionPerOpenCellInTheIntendedRange)
 {
     const Zone zone = generate_outdoor_zone({});

@@ -18,7 +18,8 @@ struct Builder {
     std::vector<int> ground; // first open z per column
 
     int& ground_at(int x, int y) { return ground[size_t(y) * size_t(n) + size_t(x)]; }
-    int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); }
+    // A seeded integer in [lo, hi]; lo when the range is empty (small zones squeeze the ranges).
+    int uniform(int lo, int hi) { return std::uniform_int_distribution<int>(lo, std::max(lo, hi))(rng); }
     double real(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
 
     // Rolling hills: a base plus seeded Gaussian bumps, and a ridge across the middle that
@@ -81,7 +82,7 @@ struct Builder {
     void town(TerrainFeatures& f)
     {
         const int side = std::max(10, n / 4);
-        const int x0 = uniform(2, n / 2 - side - 2 > 2 ? n / 2 - side - 2 : 2), y0 = uniform(2, n - side - 2);
+        const int x0 = uniform(2, n / 2 - side - 2), y0 = uniform(2, n - side - 2);
         int z = 0;
         for (int y = y0; y < y0 + side; ++y)
             for (int x = x0; x < x0 + side; ++x)
@@ -128,7 +129,7 @@ struct Builder {
     // An overhang: a slab of rock two cells above the ground over a few columns.
     void arch(TerrainFeatures& f)
     {
-        const int x0 = uniform(n / 2 + 4, n - 10), y0 = uniform(4, n - 10);
+        const int x0 = std::min(uniform(n / 2 + 4, n - 10), n - 6), y0 = std::min(uniform(4, n - 10), n - 6);
         int z = 0;
         for (int y = y0; y < y0 + 5; ++y)
             for (int x = x0; x < x0 + 5; ++x)
