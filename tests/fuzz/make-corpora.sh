@@ -50,6 +50,10 @@ if [ -d "$shared" ]; then
     for f in lqdm2-bsp2.ericw-vis.bsp lqdm2-2psb.ericw-vis.bsp lqdm2.ericw-vis.bsp; do
         [ -f "$shared/modern-quake/q1/$f" ] && copy bsp29 "$shared/modern-quake/q1/$f"
     done
+    # Quake 2 maps from ericw's qbsp -q2bsp, unvised and vised (PVS and PHS rows).
+    for f in "$shared"/modern-quake/q2/*.bsp; do
+        [ -f "$f" ] && copy ibsp38 "$f"
+    done
     copy obj "$shared/hateengine/E1M1.obj"
     copy hepvs "$shared/hateengine/E1M1.hepvs"
 else

@@ -26,7 +26,7 @@ fuzz_dict_file() {
 fuzz_max_len_for() {
     case $1 in
         fuzz_obj | fuzz_wld) echo 65536 ;;
-        fuzz_bsp29 | fuzz_doom_textures | fuzz_hepvs) echo 131072 ;;
+        fuzz_bsp29 | fuzz_ibsp38 | fuzz_doom_textures | fuzz_hepvs) echo 131072 ;;
         # A WAD's directory is at its end: a cut WAD is garbage, so every Doom seed must fit.
         fuzz_doom_map | fuzz_roundtrip) echo 262144 ;;
         *) echo 0 ;; # the largest seed
