@@ -354,11 +354,11 @@ TEST(EqZoneRoundTrip, NoPvsIsWrittenAsEmptyListsAndReadAsNone)
                             [](const std::string& n) { return n.find("no baked PVS") != std::string::npos; }));
 }
 
-// The zone WLD of an archive, parsed.
-eq::WldFile zone_wld(const std::vector<uint8_t>& s3d)
+// The zone WLD member of an archive (a WldFile views these bytes: keep them while it lives).
+std::vector<uint8_t> zone_wld_bytes(const std::vector<uint8_t>& s3d)
 {
     const eq::PfsArchive archive(s3d, "zone.s3d");
-    return eq::parse_wld(archive.read("zone.wld"), "zone.wld");
+    return archive.read("zone.wld");
 }
 
 // A zone line in water is one 0x29 whose name says both (WTNTP...), so that a reader keeping one
@@ -368,7 +368,8 @@ TEST(EqZoneRoundTrip, ZoneLineInWaterIsOneCombinedFlag)
     Zone a = hand_zone();
     a.regions[2].flags = kRegionZoneLine | kRegionWater;
     const std::vector<uint8_t> s3d = write_eq_zone(a, "zone");
-    const eq::WldFile wld = zone_wld(s3d);
+    const std::vector<uint8_t> wld_bytes = zone_wld_bytes(s3d);
+    const eq::WldFile wld = eq::parse_wld(wld_bytes, "zone.wld");
     int combined = 0;
     for (uint32_t n = 1; n <= wld.fragments.size(); ++n) {
         if (wld.fragments[n - 1].type != eq::kWldRegionFlag)
@@ -396,7 +397,8 @@ TEST(EqZoneRoundTrip, ZoneLineInWaterIsOneCombinedFlag)
 // Every 0x36 carries its vertices' box, relative to its centre (WillEQ adds the centre).
 TEST(EqZoneRoundTrip, MeshBoxesHoldTheirVerticesTightly)
 {
-    const eq::WldFile wld = zone_wld(write_eq_zone(hand_zone(), "zone"));
+    const std::vector<uint8_t> wld_bytes = zone_wld_bytes(write_eq_zone(hand_zone(), "zone"));
+    const eq::WldFile wld = eq::parse_wld(wld_bytes, "zone.wld");
     int meshes = 0;
     for (uint32_t n = 1; n <= wld.fragments.size(); ++n) {
         if (wld.fragments[n - 1].type != eq::kWldMesh)
