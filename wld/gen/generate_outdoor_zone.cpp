@@ -39,7 +39,9 @@ Zone generate_outdoor_zone(const OutdoorParams& params)
                           {"open cells", open},
                           {"buildings", uint64_t(features.buildings)}};
     if (params.bake)
-        bake_generated_pvs(zone, params.bake_threads, params.bake_progress);
+        // portal-fast: on open ground the portal flow does not finish in useful time (even 5 200
+        // regions take over 560 CPU-seconds: docs/outdoor.md); base vis is conservative and quick.
+        bake_generated_pvs(zone, params.bake_threads, params.bake_progress, VisParams::Method::Fast, false);
     else
         zone.source.notes.push_back("no PVS: not baked (the culler falls back to the frustum)");
     zone.shrink_to_fit();

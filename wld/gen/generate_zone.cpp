@@ -12,13 +12,15 @@
 
 namespace pvs::gen {
 
-// The zone's own portals, baked portal-full at level 4; the notes say how it was made.
-void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress)
+// The zone's own portals, baked with `method` (Full: level 4); the notes say how it was made.
+void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress,
+                        VisParams::Method method, bool enclosed)
 {
+    const char* name = method == VisParams::Method::Full ? "portal-full (level 4)" : "portal-fast (base vis)";
     PortalStats portal_stats;
     zone.portals = build_zone_portals(zone, {}, &portal_stats);
     VisParams params;
-    params.method = VisParams::Method::Full;
+    params.method = method;
     params.level = 4;
     params.threads = threads;
     params.progress = progress;
@@ -26,17 +28,16 @@ void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(d
     zone.baked_pvs = bake_portal_vis(*zone.portals, uint32_t(zone.regions.size()), params, &report);
     if (report.cancelled) {
         zone.baked_pvs.reset();
-        zone.source.notes.push_back("no PVS: the portal-full bake was cancelled");
+        zone.source.notes.push_back(std::string("no PVS: the ") + name + " bake was cancelled");
         return;
     }
     char note[200];
     std::snprintf(note, sizeof note,
-                  "PVS baked with portal-full (level 4) from %zu portals built from the tree: mean %.1f of %zu "
-                  "regions visible",
-                  report.portals, report.mean_visible, zone.regions.size());
+                  "PVS baked with %s from %zu portals built from the tree: mean %.1f of %zu regions visible",
+                  name, report.portals, report.mean_visible, zone.regions.size());
     zone.source.notes.push_back(note);
     // Solid cells are kLeafOutside leaves here, so only the world box counts as a leak.
-    if (!portal_stats.leaves_touching_world.empty())
+    if (enclosed && !portal_stats.leaves_touching_world.empty())
         zone.source.notes.push_back("warning: " + std::to_string(portal_stats.leaves_touching_world.size()) +
                                     " open leaves touch the world box (a leak in the generator)");
 }
@@ -60,7 +61,7 @@ Zone generate_zone(const GenParams& params)
                           {"stairs", uint64_t(level.stairs)},
                           {"cells", level.cells.size()}};
     if (params.bake)
-        bake_generated_pvs(zone, params.bake_threads, params.bake_progress);
+        bake_generated_pvs(zone, params.bake_threads, params.bake_progress, VisParams::Method::Full, true);
     else
         zone.source.notes.push_back("no PVS: not baked (GenParams::bake off; the culler falls back to the frustum)");
     zone.shrink_to_fit(); // loaders grow their vectors; keep only what the zone needs

@@ -14,6 +14,7 @@
 // Deterministic: the same (rooms, seed, cell_size, bake) gives the same zone.
 #pragma once
 
+#include "visibility/portal/portal_vis.h"
 #include "visibility/zone.h"
 
 #include <cstdint>
@@ -35,10 +36,13 @@ struct GenParams {
 // Throws std::invalid_argument for rooms outside [5, 5000] or a non-positive cell size.
 Zone generate_zone(const GenParams& params);
 
-// Bakes a generated zone's PVS with portal-full (level 4) from portals built from its tree, as
-// GenParams::bake does; the zone's notes say how it was made, or that the bake was cancelled
-// (progress returned false: then the zone has no PVS).
-void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress);
+// Bakes a generated zone's PVS from portals built from its tree with `method` (Full at level 4,
+// as GenParams::bake does; Fast for outdoor zones); the zone's notes say how it was made, or that
+// the bake was cancelled (progress returned false: then the zone has no PVS). `enclosed`: open
+// leaves touching the world box are a leak worth a warning (indoor zones); outdoor zones are open
+// up to the box (the sky, the edges) by design.
+void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress,
+                        VisParams::Method method, bool enclosed);
 
 // The built-in demo zone (the README's first command opens it), baked.
 inline GenParams demo_zone_params() { return {60, 2026, 32.0f, true}; }
