@@ -116,10 +116,8 @@ size_t Culler::keep_near(const Camera& camera, std::vector<uint32_t>& regions, s
     const float limit = float(reach * reach) * (1.0f + 1e-5f); // float rounding: never drop a reached box
     size_t kept = 0;
     for (size_t i = 0; i < count; ++i) {
-        const Aabb& box = zone_->regions[regions[i]].bounds;
-        const glm::vec3 outside = glm::max(glm::max(box.min - eye, eye - box.max), glm::vec3(0.0f));
         regions[kept] = regions[i];
-        kept += size_t(glm::dot(outside, outside) <= limit);
+        kept += size_t(boxes_.squared_distance(regions[i], eye) <= limit);
     }
     return kept;
 }

@@ -99,16 +99,16 @@ Image render_chart_image(std::span<const ChartPoint> points, const std::string& 
 void write_chart_file(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height,
                       const std::string& path)
 {
-    switch (chart_format_for(path)) {
+    const ChartFormat format = chart_format_for(path);
+    switch (format) {
     case ChartFormat::Png:
         save_png(render_chart_image(points, title, width, height), path);
         return;
     case ChartFormat::Svg:
     case ChartFormat::Pdf: {
         check_size(width, height);
-        const bool svg = chart_format_for(path) == ChartFormat::Svg;
-        SurfacePtr surface(svg ? cairo_svg_surface_create(path.c_str(), width, height)
-                               : cairo_pdf_surface_create(path.c_str(), width, height));
+        SurfacePtr surface(format == ChartFormat::Svg ? cairo_svg_surface_create(path.c_str(), width, height)
+                                                      : cairo_pdf_surface_create(path.c_str(), width, height));
         check_surface(surface.get(), path);
         draw_page(surface.get(), points, title, width, height, path);
         cairo_surface_finish(surface.get()); // writes and closes the file: errors show up here

@@ -17,6 +17,7 @@
 #include "visibility/math/aabb.h"
 #include "visibility/math/frustum.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -50,6 +51,19 @@ public:
     // four boxes at a time against one plane (the boxes are also kept plane-major, SoA, for
     // this): the path of a camera with no PVS row, where every region is tested.
     size_t collect_all(const PlaneGroups& planes, uint32_t* out) const;
+
+    // The squared distance from `p` to the nearest point of box i (0 inside it): the culler's
+    // distance stage reads the same packed boxes as its frustum stage.
+    float squared_distance(uint32_t box, const glm::vec3& p) const
+    {
+        const PackedBox& b = boxes_[box];
+        float sum = 0.0f;
+        for (int k = 0; k < 3; ++k) {
+            const float d = std::max({b.min[k] - p[k], p[k] - b.max[k], 0.0f});
+            sum += d * d;
+        }
+        return sum;
+    }
 
     size_t size() const { return boxes_.size(); }
     size_t memory_bytes() const { return boxes_.capacity() * sizeof(PackedBox) + 6 * min_x_.capacity() * sizeof(float); }

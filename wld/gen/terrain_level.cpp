@@ -51,11 +51,11 @@ struct Builder {
                 ground_at(x, y) = z;
     }
 
-    // Solid below the ground, air above it.
-    void fill_columns()
+    // Solid below the ground, air above it, in the columns x0 <= x < x1, y0 <= y < y1.
+    void fill_columns(int x0, int y0, int x1, int y1)
     {
-        for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x)
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x)
                 for (int z = 0; z < level.dims.z; ++z)
                     level.set(x, y, z, z < ground_at(x, y) ? Cell::Solid : Cell::Air);
     }
@@ -89,7 +89,7 @@ struct Builder {
                 z = std::max(z, ground_at(x, y));
         z = std::min(z, top - 7);
         flatten(x0, y0, x0 + side, y0 + side, z);
-        fill_columns();
+        fill_columns(x0, y0, x0 + side, y0 + side);
         const int gate = y0 + side / 2;
         for (int i = 0; i < side; ++i)
             for (int h = 0; h < 3; ++h) {
@@ -171,8 +171,8 @@ VoxelLevel make_terrain_level(const TerrainParams& params, TerrainFeatures* feat
     Builder b{level, rng, n, params.height, std::vector<int>(size_t(n) * size_t(n), 1)};
     TerrainFeatures f;
     b.heightfield();
-    b.fill_columns();
-    b.town(f); // flattens its ground and refills the columns
+    b.fill_columns(0, 0, n, n);
+    b.town(f); // flattens its ground and refills those columns
     f.lake_radius = std::max(3, n / 12);
     f.lake_center = {b.uniform(n / 2 + f.lake_radius + 3, n - f.lake_radius - 3),
                      b.uniform(f.lake_radius + 3, n - f.lake_radius - 3)};

@@ -48,9 +48,9 @@ void read_leaves(const ByteReader& in, Ibsp38File& f)
     }
 }
 
-// One row at `offset` bytes into the lump: decoded into `row`, its stored bytes into `stored`.
-void read_row(const ByteReader& in, const Ibsp38LumpSpan& lump, uint32_t offset, uint64_t offset_at, uint32_t clusters,
-              std::span<uint64_t> row, std::vector<uint8_t>& stored, const char* what)
+// One row at `offset` bytes into the lump, decoded into `row`; returns its compressed length.
+uint32_t read_row(const ByteReader& in, const Ibsp38LumpSpan& lump, uint32_t offset, uint64_t offset_at,
+                  uint32_t clusters, std::span<uint64_t> row, const char* what)
 {
     if (offset >= lump.length)
         in.fail(offset_at, std::string("a ") + what + " row offset (" + std::to_string(offset) +
@@ -60,7 +60,7 @@ void read_row(const ByteReader& in, const Ibsp38LumpSpan& lump, uint32_t offset,
     if (!r.complete)
         in.fail(lump.offset + offset, std::string("a ") + what + " row ends before its " + std::to_string(clusters) +
                                           " bits are decoded");
-    stored.assign(rest.begin(), rest.begin() + std::ptrdiff_t(r.consumed));
+    return uint32_t(r.consumed);
 }
 
 void read_visibility(const ByteReader& in, Ibsp38File& f)
@@ -79,16 +79,16 @@ void read_visibility(const ByteReader& in, Ibsp38File& f)
     f.phs_offsets.resize(f.clusters);
     f.pvs_rows.assign(size_t(f.clusters) * words, 0);
     f.phs_rows.assign(size_t(f.clusters) * words, 0);
-    f.pvs_stored.resize(f.clusters);
-    f.phs_stored.resize(f.clusters);
+    f.pvs_lengths.resize(f.clusters);
+    f.phs_lengths.resize(f.clusters);
     for (uint32_t c = 0; c < f.clusters; ++c) {
         const uint64_t at = lump.offset + 4 + 8 * uint64_t(c);
         f.pvs_offsets[c] = in.read<uint32_t>(at, "a PVS row offset");
         f.phs_offsets[c] = in.read<uint32_t>(at + 4, "a PHS row offset");
-        read_row(in, lump, f.pvs_offsets[c], at, f.clusters, {f.pvs_rows.data() + c * words, words}, f.pvs_stored[c],
-                 "PVS");
-        read_row(in, lump, f.phs_offsets[c], at + 4, f.clusters, {f.phs_rows.data() + c * words, words},
-                 f.phs_stored[c], "PHS");
+        f.pvs_lengths[c] =
+            read_row(in, lump, f.pvs_offsets[c], at, f.clusters, {f.pvs_rows.data() + c * words, words}, "PVS");
+        f.phs_lengths[c] =
+            read_row(in, lump, f.phs_offsets[c], at + 4, f.clusters, {f.phs_rows.data() + c * words, words}, "PHS");
     }
 }
 

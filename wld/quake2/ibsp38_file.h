@@ -45,8 +45,9 @@ struct Ibsp38File {
     uint32_t clusters = 0; // of the visibility lump (0: not vised)
     std::vector<uint32_t> pvs_offsets, phs_offsets; // per cluster, bytes into the lump
     std::vector<uint64_t> pvs_rows, phs_rows;       // decoded: clusters rows of words_for(clusters)
-    // Every compressed row's bytes, as stored: for byte-exact comparisons.
-    std::vector<std::vector<uint8_t>> pvs_stored, phs_stored;
+    // Each row's compressed length as stored (its bytes: the file at the visibility lump's offset
+    // plus the row's offset), for byte-exact comparisons.
+    std::vector<uint32_t> pvs_lengths, phs_lengths;
 };
 
 // Whether the bytes begin like a Quake 2 map ("IBSP", version 38).
