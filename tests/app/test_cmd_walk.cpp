@@ -89,6 +89,20 @@ TEST_F(WalkCommand, RowsAgreeWithTheZonesOwnPvs)
     }
     EXPECT_EQ(in_region, rows.size()) << "seeded cameras are placed inside regions";
 
+    // A far clip: the distance stage drops regions beyond the far plane's reach, and the walk's
+    // exact popping check (pixels drawn by the unculled render, with the same far plane) finds
+    // nothing it dropped that was on screen.
+    ASSERT_EQ(walk(zone_path + " --cameras 40 --seed 3 --pvs file --far 100 --csv " + csv), 0);
+    uint64_t after_pvs = 0, after_distance = 0;
+    for (const CsvRow& r : read_csv(csv)) {
+        EXPECT_LE(number(r, "regions_after_distance"), number(r, "regions_after_pvs"));
+        EXPECT_LE(number(r, "regions_drawn"), number(r, "regions_after_distance"));
+        EXPECT_EQ(number(r, "popping_confirmed"), 0u) << "the stage keeps what the far plane lets through";
+        after_pvs += number(r, "regions_after_pvs");
+        after_distance += number(r, "regions_after_distance");
+    }
+    EXPECT_LT(after_distance, after_pvs) << "a 100-unit far clip drops regions";
+
     ASSERT_EQ(walk(zone_path + " --cameras 10 --seed 3 --pvs none --csv " + csv), 0);
     for (const CsvRow& r : read_csv(csv)) {
         EXPECT_EQ(number(r, "regions_after_pvs"), zone.region_count()) << "no PVS culls nothing";
