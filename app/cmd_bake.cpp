@@ -90,11 +90,11 @@ std::string lowercase_extension(const std::string& path)
     return ext;
 }
 
-// clustered and reference run through the method registry; portal-fast and portal-full keep
+// clustered, terrain, reference and raster run through the method registry; portal-fast and portal-full keep
 // this command's own path (portal files in and out, box clusters on request).
 bool uses_registry(const BakeOptions& o)
 {
-    return o.method == "clustered" || o.method == "reference" || o.method == "raster";
+    return o.method == "clustered" || o.method == "reference" || o.method == "raster" || o.method == "terrain";
 }
 
 // The argument errors, each a sentence; empty when the options are usable.
@@ -656,10 +656,12 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_flag("--in-place", o->in_place, "Doom: write GL_PVS into the map's own GL file (.gwa or WAD), keeping "
                                              "the old one as .~gw / .~wa, as glVIS does");
     cmd->add_option("--method", o->method, "portal-fast (base vis only, loose), portal-full (clipped flow), "
-                                           "clustered (portal-full over clusters of regions), reference (sampled "
+                                           "clustered (portal-full over clusters of regions), terrain (the ground as "
+                                           "the occluder: a horizon over the zone's heightfield, for open zones), "
+                                           "reference (sampled "
                                            "sight lines: a lower bound, for judging other PVSs) or raster (cube "
                                            "maps rendered from points in each cell, as HateEngine's baker)")
-        ->check(CLI::IsMember({"portal-fast", "portal-full", "clustered", "reference", "raster"}))
+        ->check(CLI::IsMember({"portal-fast", "portal-full", "clustered", "terrain", "reference", "raster"}))
         ->capture_default_str();
     cmd->add_option("--level", o->level, "portal-full: separating-plane test level 0..4")
         ->check(CLI::Range(0, 4))

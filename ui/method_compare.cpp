@@ -45,13 +45,14 @@ constexpr std::pair<uint32_t, uint32_t> kRasterRegionCurve[] = {{32, 4}, {64, 8}
 constexpr std::pair<uint32_t, uint32_t> kRasterGridCurve[] = {{32, 8}, {64, 8}, {64, 32}};
 
 // Every method but the reference (baked first anyway); on a zone without a tree, only those that
-// need none (portal vis and clustering build on the tree).
+// need none (portal vis, clustering and the terrain's heightfield build on the tree).
 std::vector<std::string> all_methods(const Zone& zone)
 {
     std::vector<std::string> names;
     for (const VisMethod& m : vis_methods())
         if (m.name != "reference" &&
-            (zone.tree.exists() || (m.name != "portal-fast" && m.name != "portal-full" && m.name != "clustered")))
+            (zone.tree.exists() ||
+             (m.name != "portal-fast" && m.name != "portal-full" && m.name != "clustered" && m.name != "terrain")))
             names.emplace_back(m.name);
     return names;
 }

@@ -81,8 +81,10 @@ Pvs Pvs::build_rows(uint32_t row_count, uint32_t region_count, const RowSource& 
     for (uint32_t r = 0; r < row_count; ++r)
         pvs.decode_compressed(r, std::span<uint64_t>(pvs.dense_).subspan(size_t{r} * pvs.words_per_row_,
                                                                         pvs.words_per_row_));
-    pvs.compressed_ = {};
-    pvs.row_offsets_ = {};
+    // Released, not just emptied (`= {}` keeps the capacity: a dense PVS held its compressed
+    // copy's memory too, doubling it).
+    std::vector<uint8_t>().swap(pvs.compressed_);
+    std::vector<uint32_t>().swap(pvs.row_offsets_);
     return pvs;
 }
 

@@ -85,6 +85,18 @@ TEST(PvsStorage, AutoChoosesDenseForSmallAndCompressedForLargeSparseSets)
     EXPECT_LT(large.memory_bytes(), 6000u * 6000u / 8u / 4u);
 }
 
+// A dense PVS holds its matrix and nothing of the compressed rows it was chosen from (it once
+// kept their capacity: a 33 626-region zone took 261 MiB for a 135 MiB matrix).
+TEST(PvsStorage, ADensePvsHoldsOnlyItsMatrix)
+{
+    const uint32_t n = 3000;
+    const Pvs dense = build(random_rows(n, 0.7, 4), Pvs::StoragePolicy::Auto, false);
+    ASSERT_EQ(dense.storage(), Pvs::Storage::Dense);
+    const size_t matrix = size_t(n) * dense.words_per_row() * sizeof(uint64_t);
+    EXPECT_GE(dense.memory_bytes(), matrix);
+    EXPECT_LT(dense.memory_bytes(), matrix + 4096);
+}
+
 TEST(PvsStorage, CursorReturnsTheRowOfTheRegionAskedFor)
 {
     const auto rows = random_rows(500, 0.02, 4);

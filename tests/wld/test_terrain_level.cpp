@@ -169,7 +169,7 @@ TEST(OutdoorZone, OneRegionPerOpenCellInTheIntendedRange)
     EXPECT_FALSE(zone.baked_pvs);
 }
 
-// Baked (as `gen --outdoor` does), with portal-fast: every pair of cells whose centres see each
+// Baked (as `gen --outdoor` does), with the terrain method: every pair of cells whose centres see each
 // other along a sight line open by a margin (checked through the grid here) has its bit.
 TEST(OutdoorZone, BakedPvsHoldsEveryOpenSightLineAndSaysHowItWasMade)
 {
@@ -179,7 +179,7 @@ TEST(OutdoorZone, BakedPvsHoldsEveryOpenSightLineAndSaysHowItWasMade)
     const Zone zone = generate_outdoor_zone(p);
     ASSERT_TRUE(zone.baked_pvs);
     EXPECT_TRUE(std::any_of(zone.source.notes.begin(), zone.source.notes.end(), [](const std::string& n) {
-        return n.find("PVS baked with portal-fast") != std::string::npos;
+        return n.find("PVS baked with terrain") != std::string::npos;
     }));
     const VoxelLevel level = make_terrain_level({24, p.height, p.seed});
     const glm::vec3 origin = -glm::vec3(level.dims) * p.cell_size * 0.5f * glm::vec3(1, 1, 0);

@@ -9,6 +9,7 @@
 #include "visibility/portal/region_clusters.h"
 #include "visibility/raster/raster_vis.h"
 #include "visibility/reference/mesh_reference.h"
+#include "visibility/terrain/terrain_vis.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -246,6 +247,26 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     return run;
 }
 
+MethodRun run_terrain(const Zone& zone, const MethodSettings& s)
+{
+    TerrainVisParams params;
+    params.threads = s.threads;
+    params.progress = s.progress;
+    TerrainVisReport report;
+    Pvs pvs = bake_terrain_vis(zone, params, &report);
+    MethodRun run;
+    run.seconds = report.seconds;
+    run.cancelled = report.cancelled;
+    run.peak_bytes_estimate = report.peak_bytes_estimate;
+    run.summary = format("terrain: heightfield of %u x %u columns (%g x %g), %s sweeps, mean %.1f visible, %.2f s on "
+                         "%u threads",
+                         report.columns_x, report.columns_y, report.cell_x, report.cell_y,
+                         std::to_string(report.sources).c_str(), report.mean_visible, report.seconds, report.threads);
+    if (!report.cancelled)
+        run.pvs = std::move(pvs);
+    return run;
+}
+
 constexpr VisMethod kMethods[] = {
     {"file", "the PVS stored in the zone file", Bound::Unknown, false, run_file, no_label},
     {"none", "no PVS: the frustum only", Bound::Everything, false, run_none, no_label},
@@ -254,6 +275,8 @@ constexpr VisMethod kMethods[] = {
      full_label},
     {"clustered", "portal-full over clusters of regions: faster on big zones, looser", Bound::Upper, true,
      run_clustered, full_label},
+    {"terrain", "horizon over the zone's heightfield (open ground): conservative, hides only what hills hide",
+     Bound::Upper, true, run_terrain, no_label},
     {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true,
      run_reference, reference_label},
     {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop",

@@ -9,6 +9,8 @@
 //                checks: conservative (an upper bound of the true PVS)
 //   clustered    portal-full over clusters of regions (cluster_vis.h): box clusters where the
 //                regions are boxes, else BSP subtree clusters; looser, conservative
+//   terrain      the ground as the only occluder (terrain/terrain_vis.h): a horizon sweep over the
+//                zone's heightfield; conservative; for open zones
 //   reference    sampled sight lines through the tree (reference/reference_vis.h): a lower bound
 //   raster       cube maps rendered from sample points in each cell (raster/raster_vis.h): a
 //                lower bound at its density; the cells are the zone's view grid (OBJ + .hepvs)

@@ -1,15 +1,44 @@
 #include "wld/gen/generate_outdoor_zone.h"
 
+#include "visibility/terrain/terrain_vis.h"
 #include "wld/gen/generate_zone.h"
 #include "wld/gen/grid_zone.h"
 #include "wld/gen/terrain_level.h"
 
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 #include <string>
 
 namespace pvs::gen {
+
+namespace {
+
+// The terrain method: on open ground the portal flow does not finish in useful time (even 5 200
+// regions take over 560 CPU-seconds: docs/outdoor.md); the horizon over the ground is
+// conservative, quicker than base vis and tighter. The notes say how the PVS was made.
+void bake_terrain_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress)
+{
+    TerrainVisParams params;
+    params.threads = threads;
+    params.progress = progress;
+    TerrainVisReport report;
+    Pvs pvs = bake_terrain_vis(zone, params, &report);
+    if (report.cancelled) {
+        zone.source.notes.push_back("no PVS: the terrain bake was cancelled");
+        return;
+    }
+    zone.baked_pvs = std::move(pvs);
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "PVS baked with terrain (a horizon over a heightfield of %u x %u columns): mean %.1f of %zu regions "
+                  "visible",
+                  report.columns_x, report.columns_y, report.mean_visible, zone.regions.size());
+    zone.source.notes.push_back(note);
+}
+
+} // namespace
 
 Zone generate_outdoor_zone(const OutdoorParams& params)
 {
@@ -39,9 +68,7 @@ Zone generate_outdoor_zone(const OutdoorParams& params)
                           {"open cells", open},
                           {"buildings", uint64_t(features.buildings)}};
     if (params.bake)
-        // portal-fast: on open ground the portal flow does not finish in useful time (even 5 200
-        // regions take over 560 CPU-seconds: docs/outdoor.md); base vis is conservative and quick.
-        bake_generated_pvs(zone, params.bake_threads, params.bake_progress, VisParams::Method::Fast, false);
+        bake_terrain_pvs(zone, params.bake_threads, params.bake_progress);
     else
         zone.source.notes.push_back("no PVS: not baked (the culler falls back to the frustum)");
     zone.shrink_to_fit();

@@ -6,9 +6,9 @@
 //
 // Size: `size` world units a side in cells of `cell_size`; the defaults (4096 units, 64-unit
 // cells, 14 cells high) give 64 x 64 columns and about 20 000 - 30 000 regions.
-// PVS: with `bake`, portal-fast (base vis) from portals built from the tree - conservative, and
-// the only portal method that finishes on open ground in useful time (docs/outdoor.md); the
-// zone's notes say so. Off unless asked (`pvscope gen --outdoor` asks unless --no-bake).
+// PVS: with `bake`, the terrain method (visibility/terrain/terrain_vis.h: a horizon over the
+// ground) - conservative, and on open ground both quicker and tighter than base portal vis, the
+// only portal method that finishes there in useful time (docs/outdoor.md); the zone's notes say so. Off unless asked (`pvscope gen --outdoor` asks unless --no-bake).
 // Deterministic: the same parameters give the same zone.
 #pragma once
 

@@ -31,7 +31,8 @@ struct TerrainFeatures {
     glm::ivec2 lava_center{0};
     int bridge_z = 0;           // the bridge's deck: solid cells at this z over the lake
     glm::ivec3 arch_lo{0}, arch_hi{0}; // the open cells under the rock arch
-    std::vector<int> ground;    // per column (x + y * columns): the first open z
+    std::vector<int> ground;    // per column (x + y * columns): the terrain's first open z (walls
+                                // and buildings stand on it: their columns open higher)
 };
 
 inline constexpr int kMinTerrainColumns = 24;
