@@ -70,6 +70,12 @@ Culler::Culler(const Zone& zone, const Pvs* pvs)
     : zone_(&zone), pvs_(pvs), locator_(zone.tree, zone.bounds()), boxes_(region_bounds(zone)),
       zone_bounds_(zone.bounds()), face_stamp_(zone.mesh.faces.size(), 0)
 {
+    if (zone.region_count() >= kBlocksFrom) {
+        blocks_.emplace(region_bounds(zone));
+        every_region_.assign(bits::words_for(zone.region_count()), 0);
+        block_scratch_.assign(every_region_.size(), 0);
+        bits::fill(every_region_, zone.region_count());
+    }
     const uint64_t rows = zone.view_grid ? zone.view_grid->cell_count() : zone.region_count();
     if (pvs_ && pvs_->region_count() == zone.region_count() && pvs_->row_count() == rows)
         cursor_.emplace(*pvs_);
@@ -108,12 +114,18 @@ static double far_plane_reach(const Camera& camera)
     return double(camera.far_distance) * std::sqrt(1.0 + tan_x * tan_x + tan_y * tan_y);
 }
 
+// The squared distance a region's box may be from the eye and be kept.
+static float reach_limit(const Camera& camera)
+{
+    const double reach = far_plane_reach(camera);
+    return float(reach * reach) * (1.0f + 1e-5f); // float rounding: never drop a reached box
+}
+
 // Keeps, in order, the first `count` regions whose box is within the far plane's reach.
 size_t Culler::keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count) const
 {
     const glm::vec3 eye = camera.position;
-    const double reach = far_plane_reach(camera);
-    const float limit = float(reach * reach) * (1.0f + 1e-5f); // float rounding: never drop a reached box
+    const float limit = reach_limit(camera);
     size_t kept = 0;
     for (size_t i = 0; i < count; ++i) {
         regions[kept] = regions[i];
@@ -175,8 +187,10 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     std::optional<FrustumBoxes::PlaneGroups> planes;
     if (want_frustum) {
         const Frustum frustum = Frustum::from_view_projection(camera.view_projection());
-        planes = FrustumBoxes::prepare(frustum, far_plane_reaches_everything(camera) ? FrustumBoxes::Planes::SidesOnly
-                                                                                      : FrustumBoxes::Planes::All);
+        planes = FrustumBoxes::prepare(frustum,
+                                       far_plane_reaches_everything(camera) ? FrustumBoxes::Planes::SidesOnly
+                                                                            : FrustumBoxes::Planes::All,
+                                       blocks_ ? blocks_->coordinate_scale() : 0.0f);
     }
     visible.resize(stats.regions_after_pvs);
     size_t kept = 0;
@@ -187,7 +201,25 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
         visible[kept] = r;
         kept += frustum_now ? size_t(boxes_.intersects(r, *planes)) : 1u;
     };
-    if (stats.pvs_used) {
+    // Big zones: whole blocks of ids at a time, for the distance and the frustum (the same answers).
+    const bool by_blocks = blocks_ && !add_own_region && (planes || want_distance);
+    if (by_blocks) {
+        const std::span<const uint64_t> candidates = stats.pvs_used ? row : std::span<const uint64_t>(every_region_);
+        std::span<const uint64_t> survivors = candidates;
+        if (want_distance) {
+            stats.pvs_us += clock.lap();
+            near_.resize(candidates.size());
+            stats.regions_after_distance =
+                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), near_));
+            survivors = near_;
+            stats.distance_us = clock.lap();
+        }
+        if (planes) {
+            kept = blocks_->collect(survivors, boxes_, *planes, block_scratch_, visible.data());
+        } else {
+            bits::for_each_set(survivors, [&](size_t r) { visible[kept++] = uint32_t(r); });
+        }
+    } else if (stats.pvs_used) {
         bits::for_each_set(row, [&](size_t r) {
             if (add_own_region && r > size_t(stats.region)) { // keep the list ascending
                 consider(uint32_t(stats.region));
@@ -203,7 +235,7 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
         for (uint32_t r = 0; r < region_count; ++r)
             consider(r);
     }
-    if (want_distance) {
+    if (want_distance && !by_blocks) {
         stats.pvs_us += clock.lap(); // walking the row's bits is the PVS stage's work
         kept = keep_near(camera, visible, kept);
         stats.regions_after_distance = uint32_t(kept);

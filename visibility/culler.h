@@ -4,8 +4,10 @@
 //
 // The frustum stage tests the row's regions' boxes branch-free, four planes at a time
 // (FrustumBoxes; the same answers as Frustum::intersects), and uses only the four side planes
-// when the far plane lies beyond the whole zone. It walks the row's bits directly, so a frame
-// allocates nothing once `visible` has grown.
+// when the far plane lies beyond the whole zone. On zones of kBlocksFrom regions or more it first
+// tests boxes over runs of 64, 128, ... region ids (RegionBlocks: the same answers), so a frame
+// of tens of thousands of regions tests one by one only those the frustum's boundary crosses.
+// It walks the row's words directly, so a frame allocates nothing once `visible` has grown.
 //
 // Grid zones (Zone::view_grid: OBJ + .hepvs) find the camera's view cell on the grid instead
 // of walking a tree, and cull with that cell's row; a camera off the grid is "outside".
@@ -26,6 +28,7 @@
 #include "visibility/camera.h"
 #include "visibility/math/frustum_boxes.h"
 #include "visibility/pvs.h"
+#include "visibility/region_blocks.h"
 #include "visibility/region_locator.h"
 #include "visibility/zone.h"
 
@@ -36,6 +39,9 @@
 namespace pvs {
 
 enum class CullMode : uint8_t { None, Frustum, Pvs, PvsFrustum };
+
+// Zones with at least this many regions get the block stage (RegionBlocks).
+inline constexpr size_t kBlocksFrom = 512;
 const char* cull_mode_name(CullMode mode);
 std::optional<CullMode> parse_cull_mode(const std::string& name); // "none", "frustum", "pvs", "pvs+frustum"
 
@@ -100,6 +106,12 @@ private:
     const Pvs* pvs_;
     RegionLocator locator_;
     FrustumBoxes boxes_; // the regions' bounds, packed for the frustum stage
+    // Zones of kBlocksFrom regions or more: boxes over runs of ids, so the frustum decides whole
+    // blocks (region_blocks.h; the same answers), and the all-visible row for frames without a PVS.
+    std::optional<RegionBlocks> blocks_;
+    std::vector<uint64_t> every_region_;
+    std::vector<uint64_t> near_; // the distance stage's survivors, as a row
+    std::vector<uint64_t> block_scratch_;
     Aabb zone_bounds_;
     std::optional<PvsRowCursor> cursor_;
     std::vector<uint32_t> candidates_; // the PVS stage's regions, only when counting triangles

@@ -1,6 +1,7 @@
 #include "visibility/pvs.h"
 
 #include "visibility/bit_row.h"
+#include "visibility/codec/bit_runs.h"
 #include "visibility/codec/quake_rle.h"
 
 #include <cassert>
@@ -11,6 +12,9 @@ namespace pvs {
 
 namespace {
 constexpr size_t kDenseAlwaysBytes = 256 * 1024;
+// The first byte of each compressed row: which codec follows.
+constexpr uint8_t kTagQuakeRle = 0;
+constexpr uint8_t kTagBitRuns = 1;
 }
 
 Pvs Pvs::build(uint32_t region_count, const RowSource& source, StoragePolicy policy)
@@ -32,7 +36,7 @@ Pvs Pvs::build_rows(uint32_t row_count, uint32_t region_count, const RowSource& 
     // hash of the encoded bytes and confirmed against the stored copy: keying a map by a copy of
     // every row doubled the rows at the end of a bake (34 MB of a 5000-room bake's 400 MB peak).
     std::vector<uint64_t> row(pvs.words_per_row_);
-    std::vector<uint8_t> encoded;
+    std::vector<uint8_t> encoded, runs;
     struct Stored {
         uint32_t offset, size;
     };
@@ -47,8 +51,14 @@ Pvs Pvs::build_rows(uint32_t row_count, uint32_t region_count, const RowSource& 
             ++pvs.missing_count_;
             continue;
         }
-        encoded.clear();
+        // A tag byte, then the row in the shorter codec: Quake RLE for sparse rows, bit runs for
+        // dense rows in long stretches (open zones), which Quake RLE cannot shorten.
+        encoded.assign(1, kTagQuakeRle);
         encode_quake_rle(row, region_count, encoded);
+        runs.assign(1, kTagBitRuns);
+        encode_bit_runs(row, region_count, runs);
+        if (runs.size() < encoded.size())
+            encoded.swap(runs);
         const std::string_view bytes = bytes_of(encoded.data(), encoded.size());
         const size_t hash = std::hash<std::string_view>{}(bytes);
         uint32_t offset = static_cast<uint32_t>(pvs.compressed_.size());
@@ -109,7 +119,11 @@ void Pvs::decode_compressed(uint32_t region, std::span<uint64_t> out) const
         return;
     }
     // Rows were produced by our own encoder, so they are always complete.
-    decode_quake_rle(std::span<const uint8_t>(compressed_).subspan(row_offsets_[region]), region_count_, out);
+    const std::span<const uint8_t> row = std::span<const uint8_t>(compressed_).subspan(row_offsets_[region]);
+    if (row[0] == kTagBitRuns)
+        decode_bit_runs(row.subspan(1), region_count_, out);
+    else
+        decode_quake_rle(row.subspan(1), region_count_, out);
 }
 
 std::span<const uint64_t> Pvs::dense_row(uint32_t region) const

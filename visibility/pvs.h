@@ -4,7 +4,9 @@
 // every other zone rows and regions are the same set (row_count() == region_count()).
 //
 // Memory scales with what the scene needs: rows are kept either as a dense bit matrix or
-// compressed (Quake RLE, identical rows stored once), chosen when the PVS is built:
+// compressed (each row in the shorter of Quake RLE and bit runs, codec/bit_runs.h: sparse rows
+// and dense rows in long stretches both shrink; identical rows stored once), chosen when the PVS
+// is built:
 //   dense when the matrix takes at most 256 KiB, or at most twice the compressed size;
 //   compressed otherwise.
 // A row marked missing (the file had no row for that region: Quake visofs -1, an empty

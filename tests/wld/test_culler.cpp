@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 
 namespace pvs {
@@ -338,4 +339,68 @@ TEST_F(CullOutdoor, DistanceStageNeverDropsARegionWithAPointInTheFrustum)
 }
 
 } // namespace
+// Zones this big cull by blocks of regions (region_blocks.h): the drawn list is exactly the
+// per-region answer, with a PVS row or without, with a far plane or without.
+TEST(CullOutdoorBlocks, BlockStageDrawsExactlyWhatPerRegionTestsWould)
+{
+    gen::OutdoorParams params;
+    params.size = 1536.0f; // 24 columns, 5 200 regions
+    const std::unique_ptr<Zone> zone_ = std::make_unique<Zone>(gen::generate_outdoor_zone(params));
+    ASSERT_GE(zone_->region_count(), kBlocksFrom);
+    std::mt19937 rng(17);
+    const auto cameras = [&](size_t count, float far) {
+        std::vector<Camera> out;
+        std::uniform_int_distribution<size_t> region(0, zone_->region_count() - 1);
+        std::uniform_real_distribution<float> yaw(0.0f, 360.0f), pitch(-30.0f, 30.0f);
+        while (out.size() < count) {
+            Camera c;
+            c.position = zone_->regions[region(rng)].bounds.center();
+            c.yaw_degrees = yaw(rng);
+            c.pitch_degrees = pitch(rng);
+            c.far_distance = far;
+            out.push_back(c);
+        }
+        return out;
+    };
+    std::bernoulli_distribution keep(0.7);
+    const Pvs pvs = Pvs::build(uint32_t(zone_->region_count()), [&](uint32_t r, std::span<uint64_t> row) {
+        for (uint32_t c = 0; c < zone_->region_count(); ++c)
+            if (c == r || keep(rng))
+                bits::set(row, c);
+        return true;
+    });
+    Culler culler(*zone_, &pvs);
+    std::vector<uint32_t> visible;
+    std::vector<uint64_t> row(pvs.words_per_row());
+    size_t drawn = 0;
+    for (const float far : {16384.0f, 500.0f})
+        for (const Camera& camera : cameras(40, far))
+            for (const CullMode mode : {CullMode::PvsFrustum, CullMode::Frustum}) {
+                CullOptions options{mode, false};
+                options.distance_stage = far < 16384.0f;
+                const CullStats stats = culler.cull(camera, options, visible);
+                const Frustum frustum = Frustum::from_view_projection(camera.view_projection());
+                const bool sides_only = far >= 16384.0f; // the far plane is beyond the whole zone
+                const float reach = far_corner_distance(camera);
+                pvs.decode_row(uint32_t(stats.region), row);
+                std::vector<uint32_t> expected;
+                for (uint32_t r = 0; r < zone_->region_count(); ++r) {
+                    const Aabb& box = zone_->regions[r].bounds;
+                    if (mode == CullMode::PvsFrustum && !bits::test(row, r))
+                        continue;
+                    if (options.distance_stage) {
+                        const float d = box_distance(box, camera.position);
+                        ASSERT_TRUE(std::abs(d - reach) > 0.01f) << "ambiguous: no box this close to the reach";
+                        if (d > reach)
+                            continue;
+                    }
+                    if (sides_only ? frustum.intersects_sides(box) : frustum.intersects(box))
+                        expected.push_back(r);
+                }
+                ASSERT_EQ(visible, expected) << "far " << far << ", mode " << cull_mode_name(mode);
+                drawn += visible.size();
+            }
+    EXPECT_GT(drawn, 5000u);
+}
+
 } // namespace pvs

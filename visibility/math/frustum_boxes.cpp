@@ -1,5 +1,7 @@
 #include "visibility/math/frustum_boxes.h"
 
+#include <cmath>
+
 #include <algorithm>
 
 #if defined(__SSE2__)
@@ -20,7 +22,7 @@ FrustumBoxes::FrustumBoxes(std::span<const Aabb> boxes)
     }
 }
 
-FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes planes)
+FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes planes, float coordinate_scale)
 {
     PlaneGroups g;
     const int plane_count = planes == Planes::All ? 6 : 4;
@@ -37,8 +39,34 @@ FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes p
         g.neg_y[group][k] = std::min(p.normal.y, 0.0f);
         g.neg_z[group][k] = std::min(p.normal.z, 0.0f);
         g.dist[group][k] = p.dist;
+        // A distance is six products and a dist summed in float: each step rounds by at most
+        // 2^-24 of the running magnitude, below 8 * 2^-24 * (|n| . scale + |dist|) in all; the
+        // margin is 16 times that.
+        const float magnitude = (std::abs(p.normal.x) + std::abs(p.normal.y) + std::abs(p.normal.z)) * coordinate_scale +
+                                std::abs(p.dist);
+        g.margin[group][k] = 1e-5f * magnitude;
     }
     return g;
+}
+
+FrustumBoxes::Side FrustumBoxes::classify(uint32_t box, const PlaneGroups& planes) const
+{
+    const PackedBox& b = boxes_[box];
+    bool inside = true;
+    for (int g = 0; g < planes.group_count; ++g)
+        for (int k = 0; k < 4; ++k) {
+            // Positive vertex (the box's farthest point along the normal) and negative vertex.
+            const float far = b.max[0] * planes.pos_x[g][k] + b.min[0] * planes.neg_x[g][k] +
+                              b.max[1] * planes.pos_y[g][k] + b.min[1] * planes.neg_y[g][k] +
+                              b.max[2] * planes.pos_z[g][k] + b.min[2] * planes.neg_z[g][k] - planes.dist[g][k];
+            if (far < -planes.margin[g][k])
+                return Side::Outside;
+            const float near = b.min[0] * planes.pos_x[g][k] + b.max[0] * planes.neg_x[g][k] +
+                               b.min[1] * planes.pos_y[g][k] + b.max[1] * planes.neg_y[g][k] +
+                               b.min[2] * planes.pos_z[g][k] + b.max[2] * planes.neg_z[g][k] - planes.dist[g][k];
+            inside = inside && near > planes.margin[g][k];
+        }
+    return inside ? Side::Inside : Side::Partial;
 }
 
 #if defined(__SSE2__)
@@ -97,6 +125,35 @@ size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
     return kept;
 }
 
+
+uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const
+{
+    uint64_t mask = 0;
+    uint32_t i = 0;
+    for (; i + 4 <= count; i += 4) {
+        const size_t at = size_t(first) + i;
+        const __m128 lo_x = _mm_loadu_ps(&min_x_[at]), lo_y = _mm_loadu_ps(&min_y_[at]), lo_z = _mm_loadu_ps(&min_z_[at]);
+        const __m128 hi_x = _mm_loadu_ps(&max_x_[at]), hi_y = _mm_loadu_ps(&max_y_[at]), hi_z = _mm_loadu_ps(&max_z_[at]);
+        __m128 outside = _mm_setzero_ps();
+        for (int p = 0; p < planes.plane_count; ++p) {
+            const int g = p / 4, k = p % 4;
+            // intersects()'s sum, in the same order, for four boxes against plane p.
+            __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_set1_ps(planes.pos_x[g][k])),
+                                  _mm_mul_ps(lo_x, _mm_set1_ps(planes.neg_x[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(hi_y, _mm_set1_ps(planes.pos_y[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(lo_y, _mm_set1_ps(planes.neg_y[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(hi_z, _mm_set1_ps(planes.pos_z[g][k])));
+            d = _mm_add_ps(d, _mm_mul_ps(lo_z, _mm_set1_ps(planes.neg_z[g][k])));
+            d = _mm_sub_ps(d, _mm_set1_ps(planes.dist[g][k]));
+            outside = _mm_or_ps(outside, _mm_cmplt_ps(d, _mm_setzero_ps()));
+        }
+        mask |= uint64_t(~unsigned(_mm_movemask_ps(outside)) & 15u) << i;
+    }
+    for (; i < count; ++i)
+        mask |= uint64_t(intersects(first + i, planes)) << i;
+    return mask;
+}
+
 #else
 
 bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
@@ -123,6 +180,15 @@ size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
         kept += size_t(intersects(uint32_t(i), planes));
     }
     return kept;
+}
+
+
+uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const
+{
+    uint64_t mask = 0;
+    for (uint32_t i = 0; i < count; ++i)
+        mask |= uint64_t(intersects(first + i, planes)) << i;
+    return mask;
 }
 
 #endif

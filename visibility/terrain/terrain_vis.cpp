@@ -3,6 +3,7 @@
 #include "visibility/bit_matrix.h"
 #include "visibility/bit_row.h"
 #include "visibility/geometry/region_boxes.h"
+#include "visibility/portal/portalize.h"
 #include "visibility/terrain/horizon_parents.h"
 #include "visibility/worker_pool.h"
 
@@ -217,7 +218,9 @@ Pvs bake_terrain_vis(const Zone& zone, const TerrainVisParams& params, TerrainVi
     TerrainVisReport& out = report ? *report : local;
     out = TerrainVisReport{};
 
-    const std::vector<Aabb> boxes = region_volume_boxes(zone.tree, zone.regions.size(), zone.bounds());
+    // The world the portals and the reference take regions in (the zone's bounds and a margin):
+    // a region open to the sky reaches above the zone's top, and sees more from there.
+    const std::vector<Aabb> boxes = region_volume_boxes(zone.tree, zone.regions.size(), zone_portal_world(zone));
     const Heightfield field = zone_heightfield(zone.tree, boxes, params.cell);
     out.heightfield_seconds = seconds_since(start);
     out.columns_x = field.columns_x;

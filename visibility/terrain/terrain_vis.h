@@ -7,7 +7,9 @@
 // as its box: its footprint (the columns its box covers) and its top z. Lines from a region's
 // points run below the line from the same footprint point at the box top, and under a
 // heightfield a lower line is blocked wherever a higher one is: so only lines from tops to tops
-// matter. Region boxes are their volumes' (region_boxes.h), within the zone's bounds.
+// matter. Region boxes are their volumes' (region_boxes.h) in the world portals and the reference
+// take them in (zone_portal_world: the zone's bounds and a margin; a region open to the sky
+// reaches above the zone's top).
 //
 // The sweep (one per source: footprint R, top z_a). For a column C, S(C) is a lower bound of
 // the slope (rise over horizontal run from R) that any unblocked line from R at z_a needs to
@@ -31,8 +33,8 @@
 // The test is one-sided (from A's top). The PVS keeps A -> B only when neither side hides the
 // other (bits::and_with_transpose), which makes it symmetric and tighter. Conservative: an upper
 // bound of the true PVS for any zone with a tree (on indoor maps it hides little: their floors
-// are not solid to the world's bottom). Regions without a volume in the zone's bounds see and
-// are seen by everything.
+// are not solid to the world's bottom). Regions without a volume in that world see and are seen
+// by everything.
 //
 // Cost: one sweep of the grid per distinct (footprint, top), a few parents a strip, then one
 // test per pair; memory: the n x n bit matrix (n = regions), the grid, and one parent table per

@@ -1,0 +1,124 @@
+// RegionBlocks (the culler's block stage) gives exactly the per-region answers: on clustered and
+// scattered boxes in any id order, with empty and non-finite boxes among them, for random
+// frustums (all six planes and the sides only), far-plane spheres and rows, including boxes
+// placed to touch a block's boundary; and the intersect mask equals intersects() box by box.
+#include "visibility/bit_row.h"
+#include "visibility/math/frustum_boxes.h"
+#include "visibility/region_blocks.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <limits>
+#include <random>
+
+namespace pvs {
+namespace {
+
+Frustum random_frustum(std::mt19937& rng, float far)
+{
+    std::uniform_real_distribution<float> u(-500.0f, 500.0f), fov(30.0f, 110.0f), aspect(0.6f, 2.0f);
+    const glm::vec3 eye{u(rng), u(rng), u(rng)};
+    glm::vec3 at{u(rng), u(rng), u(rng)};
+    if (glm::length(at - eye) < 1.0f)
+        at += glm::vec3(10.0f, 0.0f, 0.0f);
+    const glm::mat4 proj = glm::perspective(glm::radians(fov(rng)), aspect(rng), 1.0f, far);
+    return Frustum::from_view_projection(proj * glm::lookAt(eye, at, glm::vec3(0, 0, 1)));
+}
+
+// A grid of cells (as outdoor zones), shuffled ids, a few odd boxes.
+std::vector<Aabb> grid_boxes(std::mt19937& rng, int n)
+{
+    std::vector<Aabb> boxes;
+    for (int z = 0; z < n / 2; ++z)
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x)
+                boxes.push_back({glm::vec3(x, y, z) * 40.0f - 400.0f, glm::vec3(x + 1, y + 1, z + 1) * 40.0f - 400.0f});
+    std::shuffle(boxes.begin(), boxes.end(), rng);
+    boxes[3] = Aabb{};                                            // empty
+    boxes[70].max.x = std::numeric_limits<float>::infinity();     // not finite
+    boxes[71].min.y = std::numeric_limits<float>::quiet_NaN();
+    return boxes;
+}
+
+std::vector<uint64_t> random_row(std::mt19937& rng, size_t n, double density)
+{
+    std::vector<uint64_t> row(bits::words_for(n), 0);
+    std::bernoulli_distribution pick(density);
+    for (size_t i = 0; i < n; ++i)
+        if (pick(rng))
+            bits::set(row, i);
+    return row;
+}
+
+TEST(RegionBlocks, CollectGivesEveryRegionsOwnAnswer)
+{
+    std::mt19937 rng(21);
+    const std::vector<Aabb> boxes = grid_boxes(rng, 20);
+    const FrustumBoxes regions(boxes);
+    const RegionBlocks blocks(boxes);
+    std::vector<uint64_t> scratch(bits::words_for(boxes.size()));
+    std::vector<uint32_t> got(boxes.size());
+    size_t decided = 0;
+    for (int f = 0; f < 60; ++f) {
+        const Frustum frustum = random_frustum(rng, f % 2 ? 300.0f : 5000.0f);
+        const auto row = random_row(rng, boxes.size(), f % 3 == 0 ? 1.0 : 0.6);
+        for (auto which : {FrustumBoxes::Planes::All, FrustumBoxes::Planes::SidesOnly}) {
+            const auto planes = FrustumBoxes::prepare(frustum, which, blocks.coordinate_scale());
+            std::vector<uint32_t> expected;
+            for (uint32_t r = 0; r < boxes.size(); ++r)
+                if (bits::test(row, r) && regions.intersects(r, planes))
+                    expected.push_back(r);
+            got.resize(boxes.size());
+            got.resize(blocks.collect(row, regions, planes, scratch, got.data()));
+            ASSERT_EQ(got, expected) << "frustum " << f;
+            decided += expected.size();
+        }
+    }
+    EXPECT_GT(decided, 1000u);
+}
+
+TEST(RegionBlocks, KeepNearGivesEveryRegionsOwnAnswer)
+{
+    std::mt19937 rng(5);
+    const std::vector<Aabb> boxes = grid_boxes(rng, 20);
+    const FrustumBoxes regions(boxes);
+    const RegionBlocks blocks(boxes);
+    std::uniform_real_distribution<float> u(-500.0f, 500.0f), radius(10.0f, 600.0f);
+    std::vector<uint64_t> near(bits::words_for(boxes.size()));
+    for (int t = 0; t < 80; ++t) {
+        const glm::vec3 eye{u(rng), u(rng), u(rng)};
+        float limit = radius(rng);
+        limit *= limit;
+        if (t % 4 == 0) // exactly the distance of some box: the boundary case
+            limit = regions.squared_distance(uint32_t(t * 7 % boxes.size()), eye);
+        const auto row = random_row(rng, boxes.size(), 0.7);
+        const size_t kept = blocks.keep_near(row, regions, eye, limit, near);
+        size_t expected = 0;
+        for (uint32_t r = 0; r < boxes.size(); ++r) {
+            const bool in = bits::test(row, r) && regions.squared_distance(r, eye) <= limit;
+            expected += in;
+            ASSERT_EQ(bits::test(near, r), in) << "region " << r << ", sphere " << t;
+        }
+        EXPECT_EQ(kept, expected);
+    }
+}
+
+TEST(RegionBlocks, IntersectMaskEqualsEachBoxsAnswer)
+{
+    std::mt19937 rng(9);
+    const std::vector<Aabb> boxes = grid_boxes(rng, 12);
+    const FrustumBoxes packed(boxes);
+    for (int f = 0; f < 30; ++f) {
+        const auto planes = FrustumBoxes::prepare(random_frustum(rng, 800.0f), FrustumBoxes::Planes::All);
+        for (uint32_t first = 0; first + 64 <= boxes.size(); first += 37)
+            for (uint32_t count : {1u, 3u, 4u, 17u, 64u}) {
+                const uint64_t mask = packed.intersect_mask(first, count, planes);
+                for (uint32_t i = 0; i < 64; ++i)
+                    ASSERT_EQ((mask >> i) & 1, i < count ? uint64_t(packed.intersects(first + i, planes)) : 0u);
+            }
+    }
+}
+
+} // namespace
+} // namespace pvs

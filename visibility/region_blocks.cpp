@@ -1,0 +1,203 @@
+#include "visibility/region_blocks.h"
+
+#include "visibility/bit_row.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace pvs {
+namespace {
+
+bool regular_box(const Aabb& b)
+{
+    return !b.empty() && std::isfinite(b.min.x) && std::isfinite(b.min.y) && std::isfinite(b.min.z) &&
+           std::isfinite(b.max.x) && std::isfinite(b.max.y) && std::isfinite(b.max.z);
+}
+
+// 10 bits of each coordinate, interleaved.
+uint32_t morton(uint32_t x, uint32_t y, uint32_t z)
+{
+    auto spread = [](uint32_t v) {
+        v &= 0x3ff;
+        v = (v | (v << 16)) & 0x030000ff;
+        v = (v | (v << 8)) & 0x0300f00f;
+        v = (v | (v << 4)) & 0x030c30c3;
+        v = (v | (v << 2)) & 0x09249249;
+        return v;
+    };
+    return spread(x) | (spread(y) << 1) | (spread(z) << 2);
+}
+
+// The regular regions in Morton order of their centres; the others in `odd`.
+std::vector<uint32_t> spatial_order(std::span<const Aabb> boxes, std::vector<uint32_t>& odd)
+{
+    Aabb all;
+    std::vector<uint32_t> regular;
+    for (uint32_t r = 0; r < boxes.size(); ++r) {
+        if (regular_box(boxes[r])) {
+            regular.push_back(r);
+            all.grow(boxes[r]);
+        } else {
+            odd.push_back(r);
+        }
+    }
+    std::vector<std::pair<uint32_t, uint32_t>> keyed;
+    keyed.reserve(regular.size());
+    const glm::vec3 size = glm::max(all.size(), glm::vec3(1e-6f));
+    for (uint32_t r : regular) {
+        const glm::vec3 t = (boxes[r].center() - all.min) / size * 1023.0f;
+        keyed.push_back({morton(uint32_t(std::clamp(t.x, 0.0f, 1023.0f)), uint32_t(std::clamp(t.y, 0.0f, 1023.0f)),
+                                uint32_t(std::clamp(t.z, 0.0f, 1023.0f))),
+                         r});
+    }
+    std::sort(keyed.begin(), keyed.end());
+    for (size_t i = 0; i < keyed.size(); ++i)
+        regular[i] = keyed[i].second;
+    return regular;
+}
+
+std::vector<Aabb> member_boxes(std::span<const Aabb> boxes, const std::vector<uint32_t>& member)
+{
+    std::vector<Aabb> out(member.size());
+    for (size_t i = 0; i < member.size(); ++i)
+        out[i] = boxes[member[i]];
+    return out;
+}
+
+// Level 0: one box per block of members; each level above joins neighbours two by two.
+std::vector<Aabb> level_boxes(const std::vector<Aabb>& members, std::vector<uint32_t>& first, std::vector<uint32_t>& size)
+{
+    const size_t blocks = (members.size() + RegionBlocks::kBlock - 1) / RegionBlocks::kBlock;
+    std::vector<Aabb> all(blocks);
+    for (size_t i = 0; i < members.size(); ++i)
+        all[i / RegionBlocks::kBlock].grow(members[i]);
+    first.push_back(0);
+    size.push_back(uint32_t(blocks));
+    while (size.back() > 1) {
+        const uint32_t below = first.back(), count = size.back();
+        first.push_back(uint32_t(all.size()));
+        size.push_back((count + 1) / 2);
+        for (uint32_t i = 0; i < count; i += 2) {
+            Aabb box = all[below + i];
+            if (i + 1 < count)
+                box.grow(all[below + i + 1]);
+            all.push_back(box);
+        }
+    }
+    return all;
+}
+
+float largest_coordinate(std::span<const Aabb> boxes)
+{
+    float scale = 0.0f;
+    for (const Aabb& b : boxes)
+        if (regular_box(b))
+            for (int k = 0; k < 3; ++k)
+                scale = std::max({scale, std::abs(b.min[k]), std::abs(b.max[k])});
+    return scale;
+}
+
+} // namespace
+
+RegionBlocks::RegionBlocks(std::span<const Aabb> region_boxes)
+    : region_count_(region_boxes.size()), member_(spatial_order(region_boxes, odd_)),
+      scale_(largest_coordinate(region_boxes)), member_boxes_(member_boxes(region_boxes, member_)),
+      nodes_(level_boxes(member_boxes(region_boxes, member_), level_first_, level_size_))
+{
+}
+
+size_t RegionBlocks::memory_bytes() const
+{
+    return (member_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity()) * sizeof(uint32_t) +
+           member_boxes_.memory_bytes() + nodes_.memory_bytes();
+}
+
+// Visits the tree from `node` at `level`: decide(box) says Outside / Inside / Partial for a
+// node's box; take(block, side) handles a whole block (Inside or Partial at level 0).
+template <class Decide, class Take>
+void RegionBlocks::walk(uint32_t level, uint32_t node, Decide&& decide, Take&& take) const
+{
+    const FrustumBoxes::Side side = decide(level_first_[level] + node);
+    if (side == FrustumBoxes::Side::Outside)
+        return;
+    if (side == FrustumBoxes::Side::Partial && level > 0) {
+        for (uint32_t child = node * 2; child <= node * 2 + 1 && child < level_size_[level - 1]; ++child)
+            walk(level - 1, child, decide, take);
+        return;
+    }
+    const uint32_t first = node << level;
+    const uint32_t last = std::min(level_size_[0], (node + 1) << level);
+    for (uint32_t block = first; block < last; ++block)
+        take(block, side);
+}
+
+size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& regions,
+                             const FrustumBoxes::PlaneGroups& planes, std::span<uint64_t> scratch, uint32_t* out) const
+{
+    std::fill(scratch.begin(), scratch.end(), 0);
+    const auto decide = [&](uint32_t box) { return nodes_.classify(box, planes); };
+    const auto take = [&](uint32_t block, FrustumBoxes::Side side) {
+        const uint32_t first = block * kBlock;
+        const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+        uint64_t in_row = 0; // which members the row holds
+        for (uint32_t i = 0; i < count; ++i)
+            in_row |= uint64_t(bits::test(row, member_[first + i])) << i;
+        if (in_row == 0)
+            return;
+        uint64_t keep = side == FrustumBoxes::Side::Inside ? in_row : in_row & member_boxes_.intersect_mask(first, count, planes);
+        while (keep) {
+            bits::set(scratch, member_[first + uint32_t(std::countr_zero(keep))]);
+            keep &= keep - 1;
+        }
+    };
+    if (!level_size_.empty() && level_size_[0] > 0) {
+        const uint32_t top = uint32_t(level_size_.size() - 1);
+        for (uint32_t node = 0; node < level_size_[top]; ++node)
+            walk(top, node, decide, take);
+    }
+    for (uint32_t r : odd_)
+        if (bits::test(row, r) && regions.intersects(r, planes))
+            bits::set(scratch, r);
+    size_t kept = 0;
+    bits::for_each_set(std::span<const uint64_t>(scratch), [&](size_t r) { out[kept++] = uint32_t(r); });
+    return kept;
+}
+
+size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye,
+                               float limit, std::span<uint64_t> near) const
+{
+    std::fill(near.begin(), near.end(), 0);
+    // Float distances of a box inside a node differ from the node's by far less than this.
+    constexpr float kMargin = 1e-4f;
+    const auto decide = [&](uint32_t box) {
+        if (nodes_.squared_distance(box, eye) > limit * (1.0f + kMargin))
+            return FrustumBoxes::Side::Outside;
+        return nodes_.squared_reach(box, eye) < limit * (1.0f - kMargin) ? FrustumBoxes::Side::Inside
+                                                                          : FrustumBoxes::Side::Partial;
+    };
+    const auto take = [&](uint32_t block, FrustumBoxes::Side side) {
+        const uint32_t first = block * kBlock;
+        const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+        for (uint32_t i = 0; i < count; ++i) {
+            const uint32_t r = member_[first + i];
+            if (bits::test(row, r) &&
+                (side == FrustumBoxes::Side::Inside || member_boxes_.squared_distance(first + i, eye) <= limit))
+                bits::set(near, r);
+        }
+    };
+    if (!level_size_.empty() && level_size_[0] > 0) {
+        const uint32_t top = uint32_t(level_size_.size() - 1);
+        for (uint32_t node = 0; node < level_size_[top]; ++node)
+            walk(top, node, decide, take);
+    }
+    for (uint32_t r : odd_)
+        if (bits::test(row, r) && regions.squared_distance(r, eye) <= limit)
+            bits::set(near, r);
+    size_t kept = 0;
+    for (uint64_t w : near)
+        kept += bits::popcount(w);
+    return kept;
+}
+
+} // namespace pvs

@@ -1,0 +1,67 @@
+// The culler's distance and frustum stages for big zones: regions grouped into blocks of 64 that
+// lie close together (by the Morton order of their boxes' centres, whatever the file numbers
+// them), with a box per block and a tree of boxes over neighbouring blocks, so a frustum or a
+// far-plane sphere decides a whole block, or a whole subtree, with one test where it can.
+//
+// collect() walks the tree with the camera's row: a box wholly outside the frustum drops its
+// regions, a box wholly inside takes every region of it the row holds, and only blocks the
+// frustum's boundary crosses test their regions, four at a time (FrustumBoxes::intersect_mask,
+// on the blocks' own copies of the boxes). FrustumBoxes::classify decides with a round-off
+// margin, so every region gets exactly the answer FrustumBoxes::intersects gives it: the
+// output equals the per-region stage's, ascending. keep_near() does the same for the far-plane
+// sphere. Regions whose box is empty or not finite are tested one by one, always.
+//
+// Read-only after construction; the caller gives the scratch row (one per culler).
+#pragma once
+
+#include "visibility/math/aabb.h"
+#include "visibility/math/frustum_boxes.h"
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+namespace pvs {
+
+class RegionBlocks {
+public:
+    static constexpr uint32_t kBlock = 64;
+
+    explicit RegionBlocks(std::span<const Aabb> region_boxes);
+
+    // The largest absolute coordinate of a region box: prepare the planes with it.
+    float coordinate_scale() const { return scale_; }
+    size_t region_count() const { return region_count_; }
+
+    // Writes to `out` (room for the row's set bits) the regions of `row` whose boxes intersect the
+    // prepared planes, as `regions` (every region's box, by id) answers for each; ascending.
+    // Returns their count. `scratch`: words_for(region count) words, overwritten.
+    size_t collect(std::span<const uint64_t> row, const FrustumBoxes& regions, const FrustumBoxes::PlaneGroups& planes,
+                   std::span<uint64_t> scratch, uint32_t* out) const;
+
+    // Sets in `near` (words_for(region count) words, overwritten) the regions of `row` whose
+    // boxes come within squared distance `limit` of `eye` (regions.squared_distance(r, eye) <=
+    // limit, the same answers as testing each) and returns their count.
+    size_t keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye, float limit,
+                     std::span<uint64_t> near) const;
+
+    size_t memory_bytes() const;
+
+private:
+    template <class Decide, class Take>
+    void walk(uint32_t level, uint32_t node, Decide&& decide, Take&& take) const;
+
+    // Members are made in this order, and the constructor fills some while making others:
+    // odd_ while member_ is made, the level tables while nodes_ is.
+    size_t region_count_ = 0;
+    std::vector<uint32_t> odd_;          // regions with an empty or non-finite box
+    std::vector<uint32_t> member_;       // region ids, block by block (blocks of kBlock, the last shorter)
+    std::vector<uint32_t> level_first_;  // per level: its first node in nodes_
+    std::vector<uint32_t> level_size_;   // per level: its node count
+    float scale_ = 0.0f;
+    FrustumBoxes member_boxes_;          // the members' boxes, in member_ order
+    FrustumBoxes nodes_;                 // every level's boxes, level 0 (blocks) first
+};
+
+} // namespace pvs
