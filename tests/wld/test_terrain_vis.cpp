@@ -5,6 +5,7 @@
 // count, and a zone without a tree is refused.
 #include "visibility/bit_row.h"
 #include "visibility/geometry/region_boxes.h"
+#include "visibility/reference/reference_vis.h"
 #include "visibility/terrain/terrain_heightfield.h"
 #include "visibility/terrain/terrain_vis.h"
 #include "wld/gen/generate_outdoor_zone.h"
@@ -219,6 +220,41 @@ TEST(TerrainVis, ProgressCanCancelAndAZoneWithoutATreeIsRefused)
     Zone no_tree;
     no_tree.regions.resize(3);
     EXPECT_THROW(bake_terrain_vis(no_tree, {}), std::invalid_argument);
+}
+
+// The sampled reference (an independent computation: sight lines traced through the tree) finds
+// nothing the terrain method hides, on a small zone open to the sky and at its edges, where the
+// tree's leaves run on past the zone: lines count only inside the world box, for both.
+TEST(TerrainVis, HoldsEveryPairTheReferenceFinds)
+{
+    VoxelLevel level;
+    level.dims = {12, 10, 7};
+    level.cells.assign(size_t(12) * 10 * 7, Cell::Air);
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 12; ++x) {
+            const int ground = 1 + (x == 6 && y != 2 ? 4 : 0) + ((x - 2) * (x - 2) + (y - 7) * (y - 7) < 3 ? 2 : 0);
+            for (int z = 0; z < ground; ++z)
+                level.set(x, y, z, Cell::Solid);
+        }
+    const Zone zone = zone_of(level);
+    TerrainVisReport report;
+    const Pvs terrain = bake_terrain_vis(zone, {}, &report);
+    ReferenceParams params;
+    params.seed = 3;
+    const Pvs reference = bake_reference_vis(zone, params);
+    std::vector<uint64_t> t(terrain.words_per_row()), r(reference.words_per_row());
+    size_t hidden = 0, found = 0;
+    for (uint32_t a = 0; a < zone.region_count(); ++a) {
+        terrain.decode_row(a, t);
+        reference.decode_row(a, r);
+        for (uint32_t b = 0; b < zone.region_count(); ++b) {
+            found += bits::test(r, b);
+            hidden += !bits::test(t, b);
+            ASSERT_FALSE(bits::test(r, b) && !bits::test(t, b)) << "the reference sees " << a << " -> " << b;
+        }
+    }
+    EXPECT_GT(hidden, 1000u) << "the ridge hides something";
+    EXPECT_GT(found, hidden) << "and the reference found sight lines";
 }
 
 } // namespace

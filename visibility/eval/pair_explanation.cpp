@@ -1,6 +1,8 @@
 // Why A's row holds B, or not (pair_explanation.h).
 #include "visibility/eval/pair_explanation.h"
 
+#include "visibility/portal/portalize.h"
+
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portal_vis_2d.h"
 #include "visibility/reference/grid_witness.h"
@@ -196,6 +198,7 @@ PairExplanation explain_pair(const Zone& zone, const Pvs* pvs, uint32_t a, uint3
     WitnessSearch search;
     search.seed = options.seed;
     search.reach = box.empty() ? 1e5 : 2.0 * double(glm::length(box.max - box.min)) + 1.0;
+    search.world = zone_portal_world(zone); // as the reference: no sight line through a region's part beyond it
     // Half the lines where the flow's chain says they are (its first and last windows), then
     // through any portal of A and any of B.
     const std::vector<std::vector<glm::dvec3>> a_portals = region_portal_polygons(e.portals, a);

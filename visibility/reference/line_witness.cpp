@@ -3,6 +3,7 @@
 #include "visibility/bit_row.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace pvs {
 
@@ -23,8 +24,51 @@ Pvs WitnessRows::to_pvs() const
     });
 }
 
+namespace {
+
+bool open_stretch_between(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction,
+                          double reach_back, double reach_forward, TreeTracer::Scratch& scratch, Stretch& stretch);
+
+// How far the line from `point` (inside `box`) runs along `direction` before it leaves the box.
+double exit_distance(const Aabb& box, const glm::dvec3& point, const glm::dvec3& direction)
+{
+    double t = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+        if (direction[k] > 0.0)
+            t = std::min(t, (double(box.max[k]) - point[k]) / direction[k]);
+        else if (direction[k] < 0.0)
+            t = std::min(t, (double(box.min[k]) - point[k]) / direction[k]);
+    }
+    return std::max(t, 0.0);
+}
+
+} // namespace
+
+bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction, const Aabb& world,
+                  TreeTracer::Scratch& scratch, Stretch& stretch)
+{
+    const bool inside = !world.empty() && point.x >= world.min.x && point.y >= world.min.y && point.z >= world.min.z &&
+                        point.x <= world.max.x && point.y <= world.max.y && point.z <= world.max.z;
+    if (!inside) {
+        stretch.regions.clear();
+        stretch.t_mid.clear();
+        stretch.t_begin = stretch.t_end = 0.0;
+        return false;
+    }
+    return open_stretch_between(tracer, point, direction, exit_distance(world, point, -direction),
+                                exit_distance(world, point, direction), scratch, stretch);
+}
+
 bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction, double reach,
                   TreeTracer::Scratch& scratch, Stretch& stretch)
+{
+    return open_stretch_between(tracer, point, direction, reach, reach, scratch, stretch);
+}
+
+namespace {
+
+bool open_stretch_between(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction,
+                          double reach_back, double reach_forward, TreeTracer::Scratch& scratch, Stretch& stretch)
 {
     std::vector<uint32_t>& regions = stretch.regions;
     std::vector<double>& runs = stretch.t_mid; // first the runs' [t0, t1] pairs, then their middles
@@ -44,7 +88,7 @@ bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::
         runs.back() = std::max({runs.back(), a, b});
     };
     // Backwards first, then reversed, so the stretch runs along +direction.
-    const TraceEnd back = tracer.trace(point, -direction, reach, scratch, push);
+    const TraceEnd back = tracer.trace(point, -direction, reach_back, scratch, push);
     if (regions.empty())
         return false;
     stretch.t_begin = -back.t;
@@ -59,7 +103,7 @@ bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::
     runs.resize(runs.size() - 2);
     const size_t before = regions.size();
     sign = 1.0;
-    const TraceEnd forward = tracer.trace(point, direction, reach, scratch, push);
+    const TraceEnd forward = tracer.trace(point, direction, reach_forward, scratch, push);
     // Where p lies on a plane between two regions the two walks start on either side of it;
     // they see each other only when the content rule says so. A forward walk blocked at once
     // leaves the backward part alone.
@@ -82,6 +126,8 @@ bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::
     runs.resize(regions.size());
     return true;
 }
+
+} // namespace
 
 uint64_t witness_pairs(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction,
                        const Stretch& stretch, WitnessRows& rows, TreeTracer::Scratch& scratch)

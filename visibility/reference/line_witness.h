@@ -17,6 +17,7 @@
 // start.
 #pragma once
 
+#include "visibility/math/aabb.h"
 #include "visibility/pvs.h"
 #include "visibility/reference/tree_trace.h"
 
@@ -70,6 +71,12 @@ struct Stretch {
 // The open stretch of the line through `point` along ±`direction` (unit), out to `reach` each
 // way. Returns false (and an empty stretch) when `point` is not in open space.
 bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction, double reach,
+                  TreeTracer::Scratch& scratch, Stretch& stretch);
+// The same, ending where the line leaves `world` each way (the box the portals and the region
+// sampler take regions in, zone_portal_world): a leaf open to the sky or the edge of the map runs
+// on without end in the tree, and a line must not prove a pair through its part beyond the world
+// (from there it would look over every hill). False when `point` is outside `world`.
+bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction, const Aabb& world,
                   TreeTracer::Scratch& scratch, Stretch& stretch);
 
 // Sets the pairs of the line's stretch that are not set yet and whose segment is open as a beam

@@ -111,7 +111,10 @@ std::optional<SightWitness> find_sight_line(const TreeTracer& tracer, const Regi
                 continue;
             const glm::dvec3 direction = (q - p) / length;
             const glm::dvec3 middle = 0.5 * (p + q); // open space when the line is a sight line
-            if (!open_stretch(tracer, middle, direction, search.reach, scratch, stretch) ||
+            const bool open = search.world.empty()
+                                  ? open_stretch(tracer, middle, direction, search.reach, scratch, stretch)
+                                  : open_stretch(tracer, middle, direction, search.world, scratch, stretch);
+            if (!open ||
                 !ends_on_stretch(stretch, middle, direction, a, b, from, to))
                 continue;
         } else if (volumes) {

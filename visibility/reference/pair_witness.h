@@ -18,6 +18,7 @@
 // Without polygons, only the first kind. Thread-safe: const inputs, own scratch.
 #pragma once
 
+#include "visibility/math/aabb.h"
 #include "visibility/reference/region_sampler.h"
 #include "visibility/reference/tree_trace.h"
 
@@ -38,6 +39,7 @@ struct WitnessSearch {
     uint64_t budget = 200000; // lines tried at most
     uint64_t seed = 1;
     double reach = 1e5;       // how far a line through two polygon points is traced each way
+    Aabb world;               // when not empty: lines end where they leave it (zone_portal_world)
     std::span<const std::vector<glm::dvec3>> near_a; // convex polygons A's sight lines cross
     std::span<const std::vector<glm::dvec3>> near_b; // the same for B
 };

@@ -47,7 +47,7 @@ struct Shared {
     WitnessRows& rows;
     std::span<const uint64_t> before; // the rows when the round began: what counts as new
     uint64_t seed;
-    double reach; // every line leaves the world box within this distance of a point inside it
+    Aabb world; // lines end where they leave it (zone_portal_world: where regions are taken)
     std::atomic<uint64_t> lines{0};
     std::atomic<uint64_t> rejected{0};
     std::atomic<uint64_t> walks{0};
@@ -66,7 +66,7 @@ struct Scratch {
 void prove(Shared& s, const glm::dvec3& point, const glm::dvec3& direction, Scratch& scratch)
 {
     scratch.stretch.regions.clear();
-    if (open_stretch(s.tracer, point, direction, s.reach, scratch.trace, scratch.stretch))
+    if (open_stretch(s.tracer, point, direction, s.world, scratch.trace, scratch.stretch))
         witness_pairs(s.tracer, point, direction, scratch.stretch, s.rows, scratch.trace);
 }
 
@@ -184,8 +184,7 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
         report.regions_without_volume += volumes.has_volume(r) ? 0 : 1;
 
     const Aabb world = zone_portal_world(zone);
-    Shared shared{tracer, volumes, portals, walker, rows, {}, params.seed,
-                  world.empty() ? 0.0 : glm::length(glm::dvec3(world.max) - glm::dvec3(world.min)) * 1.001};
+    Shared shared{tracer, volumes, portals, walker, rows, {}, params.seed, world};
     // Volume line indices feed a 32-bit (0,2)-sequence: at most 2^32 per region.
     const uint64_t max_samples = std::clamp<uint64_t>(params.max_samples, 1, uint64_t{1} << 32);
     const uint64_t initial = std::min<uint64_t>(std::bit_ceil(std::max<uint32_t>(params.initial_samples, 1)), max_samples);
