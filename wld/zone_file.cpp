@@ -70,6 +70,20 @@ Zone load_obj_zone(const std::string& obj_path, std::string hepvs_path, const Zo
     return zone;
 }
 
+// What an "IBSP" file is, by its version, and why it is not opened here.
+std::string ibsp_not_supported(std::span<const uint8_t> bytes)
+{
+    if (bytes.size() < 8)
+        return "an IBSP header too short for its version";
+    const uint32_t version = uint32_t(bytes[4]) | uint32_t(bytes[5]) << 8 | uint32_t(bytes[6]) << 16 | uint32_t(bytes[7]) << 24;
+    if (version == 38)
+        return "a Quake 2 map (IBSP 38): pvscope reads its clusters and its PVS and PHS rows, not yet its geometry, "
+               "so it cannot be opened as a zone";
+    if (version == 46)
+        return "a Quake 3 map (IBSP 46) is not supported";
+    return "IBSP version " + std::to_string(version) + " (neither Quake 2's 38 nor Quake 3's 46) is not supported";
+}
+
 } // namespace
 
 Zone load_zone(const std::string& path) { return load_zone(path, ZoneLoadOptions{}); }
@@ -92,10 +106,11 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
         attach_sibling_prt(zone, path);
         return zone;
     }
+    if (bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "IBSP"))
+        throw FileError(path, 0, ibsp_not_supported(bytes));
     if (bytes.size() >= 4 && (std::equal(bytes.begin(), bytes.begin() + 4, "BSP2") ||
-                              std::equal(bytes.begin(), bytes.begin() + 4, "2PSB") ||
-                              std::equal(bytes.begin(), bytes.begin() + 4, "IBSP")))
-        throw FileError(path, 0, "this BSP variant (BSP2 / 2PSB / Quake 3 IBSP) is not supported yet");
+                              std::equal(bytes.begin(), bytes.begin() + 4, "2PSB")))
+        throw FileError(path, 0, "a BSP2 / 2PSB file too short for its lump directory");
     if (bytes.size() >= 4 && bytes[0] == 30 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 0)
         throw FileError(path, 0, "Half-Life BSP 30 is not supported");
     if (eq::looks_like_pfs(bytes))
