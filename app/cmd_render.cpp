@@ -54,21 +54,22 @@ int run_render(const RenderOptions& options)
     try {
         const Zone zone = load_zone(options.path, options.load);
 
-        // Both cameras share the lens (fov, aspect, near, far): only where they stand differs.
-        auto make_camera = [&](const std::array<float, 5>& values) {
+        // Both cameras share the lens (fov, aspect, near); the far clip is the culling camera's:
+        // with --cull-camera the picture looks at its work from outside, so it must not clip.
+        auto make_camera = [&](const std::array<float, 5>& values, bool culls) {
             Camera c;
             c.position = {values[0], values[1], values[2]};
             c.yaw_degrees = values[3];
             c.pitch_degrees = values[4];
             c.fov_y_degrees = options.fov;
             c.aspect = float((*size)[0]) / float((*size)[1]);
-            if (options.far > 0.0f)
+            if (options.far > 0.0f && culls)
                 c.far_distance = options.far;
             return c;
         };
-        const Camera camera = make_camera(*camera_values);
+        const Camera camera = make_camera(*camera_values, !locked);
         const std::optional<Camera> cull_camera =
-            locked ? std::optional<Camera>(make_camera(*cull_camera_values)) : std::nullopt;
+            locked ? std::optional<Camera>(make_camera(*cull_camera_values, true)) : std::nullopt;
 
         const PvsSource source = make_pvs_source(zone, options.pvs);
         if ((options.pvs != "baked" && options.pvs != "file") || !source.pvs)
@@ -135,7 +136,7 @@ void register_render_command(CLI::App& app, int& exit_code)
     cmd->add_option("--fov", options->fov, "Vertical field of view in degrees")
         ->capture_default_str()
         ->check(CLI::Range(1.0f, 179.0f));
-    cmd->add_option("--far", options->far, "Far clip distance in zone units (EverQuest clips at the zone's far plane / fog distance): the camera's far plane and a distance stage in the culler that drops regions beyond its reach. 0: none")
+    cmd->add_option("--far", options->far, "Far clip distance in zone units (EverQuest clips at the zone's far plane / fog distance): the culling camera's far plane (with --cull-camera the picture's camera does not clip) and a distance stage in the culler that drops regions beyond its reach. 0: none")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT (1..8192 each)")
