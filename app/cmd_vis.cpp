@@ -1,5 +1,6 @@
 #include "app/cmd_vis.h"
 
+#include "app/arguments.h"
 #include "app/cli_validators.h"
 #include "app/cmd_bake.h"
 #include "app/sigint_scope.h"
@@ -7,6 +8,9 @@
 #include "wld/common/read_file.h"
 #include "wld/quake/ambient_sounds.h"
 #include "wld/quake/bsp29_reader.h"
+#include "wld/quake/prt_file.h"
+#include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/quake2_vis.h"
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
@@ -14,6 +18,7 @@
 #include <cctype>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 
 namespace pvs::app {
@@ -83,6 +88,57 @@ int ambient_only(const VisCommandOptions& o, const std::string& map, std::FILE* 
     return 0;
 }
 
+// Writes `bytes` over the map through a temporary file beside it.
+void write_in_place(const std::string& map, const std::vector<uint8_t>& bytes)
+{
+    const std::string temporary = temporary_beside(map);
+    try {
+        write_whole_file(temporary, bytes);
+    } catch (...) {
+        std::error_code ec;
+        fs::remove(temporary, ec);
+        throw;
+    }
+    replace_map(temporary, map);
+}
+
+int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
+               const std::atomic<bool>* cancel)
+{
+    if (o.ambient_only || o.portals != "file") {
+        std::fprintf(err, "pvscope: error: %s is a Quake 2 map: --ambient-only and --portals tree are for Quake maps\n",
+                     map.c_str());
+        return 2;
+    }
+    quake2::Quake2VisOptions q;
+    q.vis.method = o.fast || o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
+    q.vis.level = o.level;
+    q.vis.threads = o.threads;
+    q.vis.progress = [cancel](double) { return !(cancel && cancel->load()); };
+    q.phs = o.phs_rule == "ericw" ? quake2::PhsRule::EricwTools : quake2::PhsRule::Quake2;
+    q.phs_only = o.phs_only;
+    std::optional<quake::PrtFile> prt;
+    const std::string prt_path = (fs::path(map).replace_extension(".prt")).string();
+    if (!o.phs_only) {
+        if (!fs::is_regular_file(prt_path)) {
+            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it)\n", prt_path.c_str());
+            return 1;
+        }
+        prt = quake::load_prt(prt_path);
+    }
+    const quake2::Quake2VisResult r = quake2::vis_quake2_map(bytes, map, prt ? &*prt : nullptr, prt_path, q);
+    if (r.cancelled) {
+        std::fprintf(err, "pvscope: vis cancelled: %s left as it was\n", map.c_str());
+        return kExitCancelled;
+    }
+    write_in_place(map, r.map);
+    std::fprintf(err, "%s: Quake 2 map, %u clusters: %s, mean %.1f visible, %.1f hearable (%s PHS)%s\n", map.c_str(),
+                 r.clusters, o.phs_only ? "PVS kept" : "PVS baked", r.mean_visible, r.mean_hearable,
+                 q.phs == quake2::PhsRule::Quake2 ? "Quake 2's" : "ericw-tools'",
+                 o.phs_only ? "" : (", " + std::to_string(r.report.seconds) + " s").c_str());
+    return 0;
+}
+
 int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
 {
     if (o.visdist > 0.0) {
@@ -94,6 +150,15 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
     if (!fs::is_regular_file(map)) {
         std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
         return 1;
+    }
+    {
+        const std::vector<uint8_t> bytes = read_whole_file(map);
+        if (quake2::looks_like_ibsp38(bytes))
+            return quake2_vis(o, map, bytes, err, cancel);
+    }
+    if (o.phs_only) {
+        std::fprintf(err, "pvscope: error: --phs-only is for Quake 2 maps (IBSP 38); %s is not one\n", map.c_str());
+        return 2;
     }
     if (o.ambient_only)
         return ambient_only(o, map, err);
@@ -164,7 +229,8 @@ void register_vis_command(CLI::App& app, int& exit_code)
     auto o = std::make_shared<VisCommandOptions>();
     CLI::App* cmd = app.add_subcommand(
         "vis", "Quake's vis as a drop-in: MAP.prt -> PVS and ambient sounds, written into MAP.bsp in place (BSP 29, "
-               "BSP2, 2PSB); ericw's options with one dash or two. Ctrl-C leaves the map as it was");
+               "BSP2, 2PSB; a Quake 2 IBSP 38 map: PVS and PHS over its clusters); ericw's options with one dash or "
+               "two. Ctrl-C leaves the map as it was");
     cmd->add_option("map", o->map, "The map (MAP or MAP.bsp); its .prt is read from beside it")->required();
     cmd->add_option("--threads", o->threads, "Worker threads (0 = all cores)")->check(threads_validator())->capture_default_str();
     cmd->add_flag("--fast", o->fast, "Base vis only (portal-fast): quick and loose, as vis -fast");
@@ -186,6 +252,11 @@ void register_vis_command(CLI::App& app, int& exit_code)
         ->capture_default_str();
     cmd->add_flag("--ambient-only", o->ambient_only, "Keep the map's PVS; compute only the ambient sound levels from it");
     cmd->add_option("--report", o->report, "Write a JSON report of the bake (\"-\" = stdout)");
+    cmd->add_flag("--phsonly,--phs-only", o->phs_only, "Quake 2: keep the map's PVS and make only the PHS again");
+    cmd->add_option("--phs-rule", o->phs_rule, "Quake 2: quake2 (the engine's PHS, as id's qvis3) or ericw (what "
+                                               "ericw-tools vis writes: a subset, byte for byte)")
+        ->check(CLI::IsMember({"quake2", "ericw"}))
+        ->capture_default_str();
     cmd->callback([o, &exit_code] {
         const SigintScope sigint;
         exit_code = run_vis_command(*o, stderr, &SigintScope::interrupted());

@@ -10,6 +10,12 @@
 // --method portal-full|portal-fast, --portals file|tree (tree: portals built from the
 // BSP tree per leaf, detail brushes blocking sight, when there is no .prt or to ignore it),
 // --ambient-only (keep the map's PVS, compute only the ambient levels from it), --report R.json.
+//
+// A Quake 2 map (IBSP 38) gets Quake 2's vis instead (wld/quake2/quake2_vis.h): the PVS over its
+// clusters from the PRT1 beside it and the PHS made from it, both into the visibility lump;
+// -phsonly / --phs-only keeps the PVS and makes the PHS again; --phs-rule quake2 (default: the
+// engine's, id's qvis3) or ericw (what ericw-tools vis writes, byte for byte). No ambient sounds
+// there (Quake 2 has none in the map).
 // Unknown options are an error and nothing is written.
 // Exit codes: 0 done, 1 a file could not be read or written, 2 bad arguments, 130 cancelled.
 #pragma once
@@ -36,6 +42,8 @@ struct VisCommandOptions {
     bool nostate = false;
     double visdist = 0.0; // refused when set
     std::string report;
+    bool phs_only = false;           // Quake 2: keep the PVS, make the PHS again
+    std::string phs_rule = "quake2"; // Quake 2: quake2 | ericw
 };
 
 int run_vis_command(const VisCommandOptions& options, std::FILE* err, const std::atomic<bool>* cancel = nullptr);

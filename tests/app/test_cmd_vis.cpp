@@ -1,19 +1,24 @@
 // `pvscope vis` as a build script calls it, on copies of ericw's lqdm2 (../shared/data/modern-quake):
 // in place with the .prt beside the map, ericw's one-dash spellings, --ambient-only restoring
 // ericw's own bytes, the -noambient* switches, an interrupted run and bad options leaving the map
-// untouched, and BSP2 kept BSP2.
+// untouched, and BSP2 kept BSP2. Quake 2 maps (modern-quake/q2): PVS and PHS over clusters from
+// the PRT1 beside the map, every other lump unchanged, --phs-only with ericw's rule rebuilding
+// ericw's own PHS, and the errors that leave the map as it was.
 #include "app/cmd_bake.h"
 #include "app/cmd_vis.h"
 
 #include "tests/app/bake_command_fixture.h"
 #include "wld/common/read_file.h"
 #include "wld/quake/ambient_sounds.h"
+#include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/phs.h"
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <filesystem>
 
 namespace pvs::test {
@@ -180,6 +185,77 @@ TEST_F(VisCommand, Bsp2StaysBsp2)
     const Zone zone = load_zone(map);
     ASSERT_TRUE(zone.baked_pvs.has_value());
     EXPECT_EQ(zone.source.version, "BSP2");
+}
+
+// Quake 2: the unvised maps vised from their .prt beside them get ericw's cluster counts and a PVS
+// the same as ericw vis's on the two maps without t-junction noise; the PHS is Quake 2's rule of
+// that PVS (recomputed here); every lump but the visibility lump is byte for byte the input's.
+TEST_F(VisCommand, Quake2MapsGetPvsAndPhsOverClusters)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_liquids.bsp");
+    for (const char* name : {"q2_areaportals", "q2_liquids", "q2_tjunc_matrix"}) {
+        const std::string base = std::string("modern-quake/q2/") + name;
+        const std::string map = copy({(base + ".bsp").c_str(), (base + ".prt").c_str()});
+        ASSERT_FALSE(map.empty());
+        const std::vector<uint8_t> before = read_bytes(map);
+        ASSERT_EQ(vis_cli({"vis", "-threads", "2", path(name)}), 0) << name;
+        const std::vector<uint8_t> after = read_bytes(map);
+        const quake2::Ibsp38File in = quake2::read_ibsp38(before, map), out = quake2::read_ibsp38(after, map);
+        const std::vector<uint8_t> ericw_bytes = read_bytes(*find_shared_data(base + ".ericw-vis.bsp"));
+        const quake2::Ibsp38File ericw = quake2::read_ibsp38(ericw_bytes, name);
+        EXPECT_EQ(out.clusters, ericw.clusters) << name;
+        EXPECT_EQ(out.phs_rows, quake2::compute_phs(out.pvs_rows, out.clusters, quake2::PhsRule::Quake2)) << name;
+        if (std::string(name) != "q2_tjunc_matrix")
+            EXPECT_EQ(out.pvs_rows, ericw.pvs_rows) << name;
+        for (int lump = 0; lump < quake2::kIbsp38LumpCount; ++lump) {
+            if (lump == quake2::kQ2LumpVisibility)
+                continue;
+            const auto a = std::span(before).subspan(in.lumps[lump].offset, in.lumps[lump].length);
+            const auto b = std::span(after).subspan(out.lumps[lump].offset, out.lumps[lump].length);
+            EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << name << " lump " << lump;
+        }
+    }
+}
+
+// -phsonly with ericw's rule on ericw's own output: the PVS kept, the PHS ericw's byte for byte
+// (decoded rows and their stored lengths); with Quake 2's rule the PHS holds ericw's.
+TEST_F(VisCommand, Quake2PhsOnlyRebuildsEricwsPhs)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_tjunc_matrix.ericw-vis.bsp");
+    const std::string map = copy({"modern-quake/q2/q2_tjunc_matrix.ericw-vis.bsp"});
+    ASSERT_FALSE(map.empty());
+    const std::vector<uint8_t> ericw_bytes = read_bytes(map);
+    const quake2::Ibsp38File ericw = quake2::read_ibsp38(ericw_bytes, map);
+    ASSERT_EQ(vis_cli({"vis", "-phsonly", "--phs-rule", "ericw", map}), 0);
+    const quake2::Ibsp38File ours = quake2::read_ibsp38(read_bytes(map), map);
+    EXPECT_EQ(ours.pvs_rows, ericw.pvs_rows);
+    EXPECT_EQ(ours.phs_rows, ericw.phs_rows);
+    EXPECT_EQ(ours.phs_lengths, ericw.phs_lengths);
+    ASSERT_EQ(vis_cli({"vis", "--phs-only", map}), 0); // Quake 2's rule
+    const quake2::Ibsp38File quake2_rule = quake2::read_ibsp38(read_bytes(map), map);
+    size_t added = 0;
+    for (size_t w = 0; w < ericw.phs_rows.size(); ++w) {
+        EXPECT_EQ(quake2_rule.phs_rows[w] & ericw.phs_rows[w], ericw.phs_rows[w]);
+        added += std::popcount(quake2_rule.phs_rows[w] & ~ericw.phs_rows[w]);
+    }
+    EXPECT_GT(added, 0u) << "96 clusters: the bits ericw's word loop leaves out";
+}
+
+TEST_F(VisCommand, Quake2ErrorsLeaveTheMapAsItWas)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_liquids.bsp");
+    const std::string map = copy({"modern-quake/q2/q2_liquids.bsp", "modern-quake/q2/q2_areaportals.prt"});
+    ASSERT_FALSE(map.empty());
+    const std::vector<uint8_t> before = read_bytes(map);
+    EXPECT_EQ(vis_cli({"vis", map}), 1) << "no q2_liquids.prt beside it";
+    fs::rename(path("q2_areaportals.prt"), path("q2_liquids.prt"));
+    EXPECT_EQ(vis_cli({"vis", map}), 1) << "another map's portals (8 leaves for 18 clusters)";
+    EXPECT_EQ(vis_cli({"vis", "--phs-only", map}), 1) << "no PVS to make a PHS from";
+    EXPECT_EQ(vis_cli({"vis", "--phs-rule", "q3", map}), -2);
+    EXPECT_EQ(read_bytes(map), before);
+    SHARED_DATA_OR_SKIP(q1, "modern-quake/q1/lqdm2.bsp");
+    const std::string quake1 = copy({"modern-quake/q1/lqdm2.bsp"});
+    EXPECT_EQ(vis_cli({"vis", "--phs-only", quake1}), 2) << "a Quake map has no PHS";
 }
 
 } // namespace

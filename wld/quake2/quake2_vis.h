@@ -1,0 +1,43 @@
+// Quake 2's vis on a map: the PVS over clusters from the portal file qbsp wrote beside it (PRT1,
+// whose "leaves" are the map's clusters), the PHS made from it (phs.h), both written into the
+// visibility lump (ibsp38_writer.h); every other lump's bytes unchanged. With `phs_only`, the map's
+// own PVS is kept and only the PHS is made again (ericw's -phsonly).
+//
+// Which PHS: PhsRule::Quake2 by default (what the engine reads it for: every cluster a sound in a
+// cluster of the PVS could be heard from; id's qvis3); PhsRule::EricwTools writes what today's
+// ericw-tools vis writes (a subset: phs.h says why), byte for byte. Library code: throws FileError
+// for a map or portal file it cannot use, never prints; a cancelled bake returns no bytes.
+#pragma once
+
+#include "visibility/portal/portal_vis.h"
+#include "wld/quake/prt_file.h"
+#include "wld/quake2/phs.h"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace pvs::quake2 {
+
+struct Quake2VisOptions {
+    VisParams vis;                    // method, level, threads, progress
+    PhsRule phs = PhsRule::Quake2;
+    bool phs_only = false;            // keep the map's PVS, make the PHS again
+};
+
+struct Quake2VisResult {
+    std::vector<uint8_t> map;         // the vised map (empty when cancelled)
+    uint32_t clusters = 0;
+    double mean_visible = 0.0;        // PVS bits per cluster
+    double mean_hearable = 0.0;       // PHS bits per cluster
+    VisReport report;                 // the bake's (nothing baked with phs_only)
+    bool cancelled = false;
+};
+
+// `prt`: the portal file (unused with phs_only; its leaf count must be the map's cluster count).
+Quake2VisResult vis_quake2_map(std::span<const uint8_t> map, const std::string& file, const quake::PrtFile* prt,
+                               const std::string& prt_file, const Quake2VisOptions& options);
+
+} // namespace pvs::quake2
