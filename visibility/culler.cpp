@@ -73,7 +73,6 @@ Culler::Culler(const Zone& zone, const Pvs* pvs)
     if (zone.region_count() >= kBlocksFrom) {
         blocks_.emplace(region_bounds(zone));
         every_region_.assign(bits::words_for(zone.region_count()), 0);
-        block_scratch_.assign(every_region_.size(), 0);
         bits::fill(every_region_, zone.region_count());
     }
     const uint64_t rows = zone.view_grid ? zone.view_grid->cell_count() : zone.region_count();
@@ -210,7 +209,7 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
             stats.pvs_us += clock.lap();
             near_.resize(candidates.size());
             stats.regions_after_distance =
-                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), near_));
+                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), block_scratch_, near_));
             survivors = near_;
             stats.distance_us = clock.lap();
         }

@@ -111,7 +111,7 @@ private:
     std::optional<RegionBlocks> blocks_;
     std::vector<uint64_t> every_region_;
     std::vector<uint64_t> near_; // the distance stage's survivors, as a row
-    std::vector<uint64_t> block_scratch_;
+    RegionBlocks::Scratch block_scratch_;
     Aabb zone_bounds_;
     std::optional<PvsRowCursor> cursor_;
     std::vector<uint32_t> candidates_; // the PVS stage's regions, only when counting triangles

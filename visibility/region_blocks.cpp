@@ -105,11 +105,34 @@ RegionBlocks::RegionBlocks(std::span<const Aabb> region_boxes)
       scale_(largest_coordinate(region_boxes)), member_boxes_(member_boxes(region_boxes, member_)),
       nodes_(level_boxes(member_boxes(region_boxes, member_), level_first_, level_size_))
 {
+    // Per row word, the blocks its regions belong to and which of its bits each holds, so a
+    // block taken whole is taken a word at a time, not a region at a time.
+    const size_t words = bits::words_for(region_count_);
+    std::vector<std::vector<WordPart>> parts(words);
+    for (uint32_t i = 0; i < member_.size(); ++i) {
+        const uint32_t r = member_[i], block = i / kBlock;
+        std::vector<WordPart>& list = parts[r / 64];
+        if (list.empty() || list.back().block != block)
+            list.push_back({block, 0});
+        list.back().mask |= uint64_t{1} << (r % 64);
+    }
+    word_first_.assign(words + 1, 0);
+    for (size_t w = 0; w < words; ++w) {
+        std::sort(parts[w].begin(), parts[w].end(), [](const WordPart& a, const WordPart& b) { return a.block < b.block; });
+        // Members of one block come in any id order: merge the repeats.
+        for (const WordPart& part : parts[w])
+            if (!word_parts_.empty() && word_first_[w] < word_parts_.size() && word_parts_.back().block == part.block)
+                word_parts_.back().mask |= part.mask;
+            else
+                word_parts_.push_back(part);
+        word_first_[w + 1] = uint32_t(word_parts_.size());
+    }
 }
 
 size_t RegionBlocks::memory_bytes() const
 {
-    return (member_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity()) * sizeof(uint32_t) +
+    return (member_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity() +
+            word_first_.capacity()) * sizeof(uint32_t) + word_parts_.capacity() * sizeof(WordPart) +
            member_boxes_.memory_bytes() + nodes_.memory_bytes();
 }
 
@@ -132,12 +155,32 @@ void RegionBlocks::walk(uint32_t level, uint32_t node, Decide&& decide, Take&& t
         take(block, side);
 }
 
-size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& regions,
-                             const FrustumBoxes::PlaneGroups& planes, std::span<uint64_t> scratch, uint32_t* out) const
+// Sets in `out` the row's bits of every block `sides` calls Inside, a word at a time.
+void RegionBlocks::take_inside(std::span<const uint64_t> row, const std::vector<uint8_t>& sides,
+                               std::span<uint64_t> out) const
 {
-    std::fill(scratch.begin(), scratch.end(), 0);
+    for (size_t w = 0; w + 1 < word_first_.size(); ++w) {
+        if (row[w] == 0)
+            continue;
+        uint64_t inside = 0;
+        for (uint32_t k = word_first_[w]; k < word_first_[w + 1]; ++k)
+            if (sides[word_parts_[k].block] == uint8_t(FrustumBoxes::Side::Inside))
+                inside |= word_parts_[k].mask;
+        out[w] |= row[w] & inside;
+    }
+}
+
+size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& regions,
+                             const FrustumBoxes::PlaneGroups& planes, Scratch& scratch, uint32_t* out) const
+{
+    std::vector<uint64_t>& taken = scratch.bits;
+    taken.assign(row.size(), 0);
+    scratch.sides.assign(level_size_.empty() ? 0 : level_size_[0], uint8_t(FrustumBoxes::Side::Outside));
     const auto decide = [&](uint32_t box) { return nodes_.classify(box, planes); };
     const auto take = [&](uint32_t block, FrustumBoxes::Side side) {
+        scratch.sides[block] = uint8_t(side);
+        if (side != FrustumBoxes::Side::Partial)
+            return; // Inside blocks are taken a word at a time below
         const uint32_t first = block * kBlock;
         const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
         uint64_t in_row = 0; // which members the row holds
@@ -145,9 +188,9 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
             in_row |= uint64_t(bits::test(row, member_[first + i])) << i;
         if (in_row == 0)
             return;
-        uint64_t keep = side == FrustumBoxes::Side::Inside ? in_row : in_row & member_boxes_.intersect_mask(first, count, planes);
+        uint64_t keep = in_row & member_boxes_.intersect_mask(first, count, planes);
         while (keep) {
-            bits::set(scratch, member_[first + uint32_t(std::countr_zero(keep))]);
+            bits::set(taken, member_[first + uint32_t(std::countr_zero(keep))]);
             keep &= keep - 1;
         }
     };
@@ -156,18 +199,20 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
         for (uint32_t node = 0; node < level_size_[top]; ++node)
             walk(top, node, decide, take);
     }
+    take_inside(row, scratch.sides, taken);
     for (uint32_t r : odd_)
         if (bits::test(row, r) && regions.intersects(r, planes))
-            bits::set(scratch, r);
+            bits::set(taken, r);
     size_t kept = 0;
-    bits::for_each_set(std::span<const uint64_t>(scratch), [&](size_t r) { out[kept++] = uint32_t(r); });
+    bits::for_each_set(std::span<const uint64_t>(taken), [&](size_t r) { out[kept++] = uint32_t(r); });
     return kept;
 }
 
 size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye,
-                               float limit, std::span<uint64_t> near) const
+                               float limit, Scratch& scratch, std::span<uint64_t> near) const
 {
     std::fill(near.begin(), near.end(), 0);
+    scratch.sides.assign(level_size_.empty() ? 0 : level_size_[0], uint8_t(FrustumBoxes::Side::Outside));
     // Float distances of a box inside a node differ from the node's by far less than this.
     constexpr float kMargin = 1e-4f;
     const auto decide = [&](uint32_t box) {
@@ -177,12 +222,14 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
                                                                           : FrustumBoxes::Side::Partial;
     };
     const auto take = [&](uint32_t block, FrustumBoxes::Side side) {
+        scratch.sides[block] = uint8_t(side);
+        if (side != FrustumBoxes::Side::Partial)
+            return;
         const uint32_t first = block * kBlock;
         const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
         for (uint32_t i = 0; i < count; ++i) {
             const uint32_t r = member_[first + i];
-            if (bits::test(row, r) &&
-                (side == FrustumBoxes::Side::Inside || member_boxes_.squared_distance(first + i, eye) <= limit))
+            if (bits::test(row, r) && member_boxes_.squared_distance(first + i, eye) <= limit)
                 bits::set(near, r);
         }
     };
@@ -191,6 +238,7 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
         for (uint32_t node = 0; node < level_size_[top]; ++node)
             walk(top, node, decide, take);
     }
+    take_inside(row, scratch.sides, near);
     for (uint32_t r : odd_)
         if (bits::test(row, r) && regions.squared_distance(r, eye) <= limit)
             bits::set(near, r);

@@ -6,12 +6,13 @@
 // collect() walks the tree with the camera's row: a box wholly outside the frustum drops its
 // regions, a box wholly inside takes every region of it the row holds, and only blocks the
 // frustum's boundary crosses test their regions, four at a time (FrustumBoxes::intersect_mask,
-// on the blocks' own copies of the boxes). FrustumBoxes::classify decides with a round-off
+// on the blocks' own copies of the boxes); the blocks taken whole are taken a row word at a time
+// (per word, which of its bits each block holds). FrustumBoxes::classify decides with a round-off
 // margin, so every region gets exactly the answer FrustumBoxes::intersects gives it: the
 // output equals the per-region stage's, ascending. keep_near() does the same for the far-plane
 // sphere. Regions whose box is empty or not finite are tested one by one, always.
 //
-// Read-only after construction; the caller gives the scratch row (one per culler).
+// Read-only after construction; the caller gives the scratch (one per thread).
 #pragma once
 
 #include "visibility/math/aabb.h"
@@ -34,23 +35,35 @@ public:
     float coordinate_scale() const { return scale_; }
     size_t region_count() const { return region_count_; }
 
+    // The caller's working memory (one per thread), reused across frames.
+    struct Scratch {
+        std::vector<uint64_t> bits;
+        std::vector<uint8_t> sides; // per block: FrustumBoxes::Side
+    };
+
     // Writes to `out` (room for the row's set bits) the regions of `row` whose boxes intersect the
     // prepared planes, as `regions` (every region's box, by id) answers for each; ascending.
-    // Returns their count. `scratch`: words_for(region count) words, overwritten.
+    // Returns their count.
     size_t collect(std::span<const uint64_t> row, const FrustumBoxes& regions, const FrustumBoxes::PlaneGroups& planes,
-                   std::span<uint64_t> scratch, uint32_t* out) const;
+                   Scratch& scratch, uint32_t* out) const;
 
     // Sets in `near` (words_for(region count) words, overwritten) the regions of `row` whose
     // boxes come within squared distance `limit` of `eye` (regions.squared_distance(r, eye) <=
     // limit, the same answers as testing each) and returns their count.
     size_t keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye, float limit,
-                     std::span<uint64_t> near) const;
+                     Scratch& scratch, std::span<uint64_t> near) const;
 
     size_t memory_bytes() const;
 
 private:
     template <class Decide, class Take>
     void walk(uint32_t level, uint32_t node, Decide&& decide, Take&& take) const;
+    void take_inside(std::span<const uint64_t> row, const std::vector<uint8_t>& sides, std::span<uint64_t> out) const;
+
+    struct WordPart {
+        uint32_t block;
+        uint64_t mask; // the bits of the word whose regions are in `block`
+    };
 
     // Members are made in this order, and the constructor fills some while making others:
     // odd_ while member_ is made, the level tables while nodes_ is.
@@ -60,6 +73,8 @@ private:
     std::vector<uint32_t> level_first_;  // per level: its first node in nodes_
     std::vector<uint32_t> level_size_;   // per level: its node count
     float scale_ = 0.0f;
+    std::vector<uint32_t> word_first_;   // per row word: its first entry in word_parts_ (+ 1)
+    std::vector<WordPart> word_parts_;
     FrustumBoxes member_boxes_;          // the members' boxes, in member_ order
     FrustumBoxes nodes_;                 // every level's boxes, level 0 (blocks) first
 };

@@ -57,7 +57,7 @@ TEST(RegionBlocks, CollectGivesEveryRegionsOwnAnswer)
     const std::vector<Aabb> boxes = grid_boxes(rng, 20);
     const FrustumBoxes regions(boxes);
     const RegionBlocks blocks(boxes);
-    std::vector<uint64_t> scratch(bits::words_for(boxes.size()));
+    RegionBlocks::Scratch scratch;
     std::vector<uint32_t> got(boxes.size());
     size_t decided = 0;
     for (int f = 0; f < 60; ++f) {
@@ -86,6 +86,7 @@ TEST(RegionBlocks, KeepNearGivesEveryRegionsOwnAnswer)
     const RegionBlocks blocks(boxes);
     std::uniform_real_distribution<float> u(-500.0f, 500.0f), radius(10.0f, 600.0f);
     std::vector<uint64_t> near(bits::words_for(boxes.size()));
+    RegionBlocks::Scratch scratch;
     for (int t = 0; t < 80; ++t) {
         const glm::vec3 eye{u(rng), u(rng), u(rng)};
         float limit = radius(rng);
@@ -93,7 +94,7 @@ TEST(RegionBlocks, KeepNearGivesEveryRegionsOwnAnswer)
         if (t % 4 == 0) // exactly the distance of some box: the boundary case
             limit = regions.squared_distance(uint32_t(t * 7 % boxes.size()), eye);
         const auto row = random_row(rng, boxes.size(), 0.7);
-        const size_t kept = blocks.keep_near(row, regions, eye, limit, near);
+        const size_t kept = blocks.keep_near(row, regions, eye, limit, scratch, near);
         size_t expected = 0;
         for (uint32_t r = 0; r < boxes.size(); ++r) {
             const bool in = bits::test(row, r) && regions.squared_distance(r, eye) <= limit;
