@@ -34,16 +34,17 @@ TEST(BitRuns, EveryRowComesBackBitForBit)
     for (size_t n : {0u, 1u, 63u, 64u, 65u, 127u, 128u, 1000u, 33626u})
         for (int shape = 0; shape < 5; ++shape) {
             std::vector<uint64_t> row(bits::words_for(n), 0);
-            if (shape == 1)
+            if (shape == 1) {
                 bits::fill(row, n);
-            else if (shape == 2)
+            } else if (shape == 2) {
                 row = runs_row(n, rng, 40);
-            else if (shape == 3)
+            } else if (shape == 3) {
                 for (size_t i = 0; i < n; ++i)
                     if (rng() % 2)
                         bits::set(row, i);
-            else if (shape == 4 && n)
+            } else if (shape == 4 && n) {
                 bits::set(row, n - 1);
+            }
             std::vector<uint8_t> encoded;
             encode_bit_runs(row, n, encoded);
             std::vector<uint64_t> back(bits::words_for(n) + 1, ~uint64_t{0});

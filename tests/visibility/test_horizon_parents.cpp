@@ -54,7 +54,7 @@ TEST(HorizonParents, HullTestMatchesTheDefinition)
 TEST(HorizonParents, EverySegmentCrossesEachStripThroughItsParents)
 {
     const int n = 14;
-    for (const auto [w, h] : {std::pair{1u, 1u}, {2u, 1u}, {1u, 3u}, {3u, 2u}}) {
+    for (const auto& [w, h] : {std::pair{1u, 1u}, {2u, 1u}, {1u, 3u}, {3u, 2u}}) {
         const HorizonParents t(w, h, n, n);
         std::vector<uint32_t> rank(t.order().size());
         for (uint32_t i = 0; i < t.order().size(); ++i)

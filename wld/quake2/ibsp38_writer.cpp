@@ -5,7 +5,8 @@
 #include "wld/quake2/ibsp38_file.h"
 
 #include <algorithm>
-#include <map>
+#include <string>
+#include <unordered_map>
 #include <numeric>
 #include <stdexcept>
 
@@ -28,12 +29,12 @@ std::vector<uint8_t> encode_visibility_lump(std::span<const uint64_t> pvs_rows, 
         throw std::invalid_argument("visibility lump: the rows do not match " + std::to_string(clusters) + " clusters");
     std::vector<uint8_t> lump(4 + size_t(clusters) * 8, 0);
     put_u32(lump, 0, clusters);
-    std::map<std::vector<uint8_t>, uint32_t> written; // a row's bytes -> its offset
+    std::unordered_map<std::string, uint32_t> written; // a row's bytes -> its offset
     std::vector<uint8_t> row;
     auto place = [&](std::span<const uint64_t> bits) {
         row.clear();
         encode_quake_rle(bits, clusters, row);
-        const auto [it, fresh] = written.emplace(row, uint32_t(lump.size()));
+        const auto [it, fresh] = written.emplace(std::string(row.begin(), row.end()), uint32_t(lump.size()));
         if (fresh)
             lump.insert(lump.end(), row.begin(), row.end());
         return it->second;
