@@ -225,7 +225,8 @@ TEST(TerrainVis, ProgressCanCancelAndAZoneWithoutATreeIsRefused)
 // The sampled reference (an independent computation: sight lines traced through the tree) finds
 // nothing the terrain method hides, on a small zone open to the sky and at its edges, where the
 // tree's leaves run on past the zone: lines count only inside the world box, for both.
-TEST(TerrainVis, HoldsEveryPairTheReferenceFinds)
+// The small zone with a ridge, a hill and a gap, open at its top and edges.
+VoxelLevel ridge_level()
 {
     VoxelLevel level;
     level.dims = {12, 10, 7};
@@ -236,23 +237,61 @@ TEST(TerrainVis, HoldsEveryPairTheReferenceFinds)
             for (int z = 0; z < ground; ++z)
                 level.set(x, y, z, Cell::Solid);
         }
-    const Zone zone = zone_of(level);
+    return level;
+}
+
+// Every bit the reference finds is in the PVS; returns the bits the PVS hides.
+size_t expect_holds_the_reference(const Zone& zone, const Pvs& terrain, const Pvs& reference)
+{
+    std::vector<uint64_t> t(terrain.words_per_row()), r(reference.words_per_row());
+    size_t hidden = 0;
+    for (uint32_t a = 0; a < zone.region_count(); ++a) {
+        terrain.decode_row(a, t);
+        reference.decode_row(a, r);
+        for (uint32_t b = 0; b < zone.region_count(); ++b) {
+            hidden += !bits::test(t, b);
+            EXPECT_FALSE(bits::test(r, b) && !bits::test(t, b)) << "the reference sees " << a << " -> " << b;
+        }
+    }
+    return hidden;
+}
+
+// Regions of many sizes (the tree's merged boxes, as real zones have): sources grown to powers of
+// two; and a parent-table budget too small for the grid, which coarsens it. Both stay conservative.
+TEST(TerrainVis, RegionsOfManySizesAndACoarsenedGridHoldTheReference)
+{
+    const VoxelLevel level = ridge_level();
+    const Zone zone = gen::build_grid_zone(level, gen::uniform_grid_axes(level.dims, kCell, glm::vec3(0.0f)));
+    ASSERT_LT(zone.region_count(), size_t(12) * 10 * 6) << "merged regions";
+    ReferenceParams reference_params;
+    reference_params.seed = 5;
+    const Pvs reference = bake_reference_vis(zone, reference_params);
+    TerrainVisReport fine, coarse;
+    const Pvs fine_pvs = bake_terrain_vis(zone, {}, &fine);
+    EXPECT_GT(fine.footprint_sizes, 1u);
+    expect_holds_the_reference(zone, fine_pvs, reference); // merged air boxes reach over the ridge: little hides
+    TerrainVisParams tight;
+    tight.table_budget_bytes = 4096;
+    const Pvs coarse_pvs = bake_terrain_vis(zone, tight, &coarse);
+    EXPECT_LT(coarse.columns_x, fine.columns_x) << "the grid coarsened";
+    expect_holds_the_reference(zone, coarse_pvs, reference);
+}
+
+TEST(TerrainVis, HoldsEveryPairTheReferenceFinds)
+{
+    const Zone zone = zone_of(ridge_level());
     TerrainVisReport report;
     const Pvs terrain = bake_terrain_vis(zone, {}, &report);
     ReferenceParams params;
     params.seed = 3;
     const Pvs reference = bake_reference_vis(zone, params);
-    std::vector<uint64_t> t(terrain.words_per_row()), r(reference.words_per_row());
-    size_t hidden = 0, found = 0;
+    size_t found = 0;
+    std::vector<uint64_t> r(reference.words_per_row());
     for (uint32_t a = 0; a < zone.region_count(); ++a) {
-        terrain.decode_row(a, t);
         reference.decode_row(a, r);
-        for (uint32_t b = 0; b < zone.region_count(); ++b) {
-            found += bits::test(r, b);
-            hidden += !bits::test(t, b);
-            ASSERT_FALSE(bits::test(r, b) && !bits::test(t, b)) << "the reference sees " << a << " -> " << b;
-        }
+        found += bits::count(r);
     }
+    const size_t hidden = expect_holds_the_reference(zone, terrain, reference);
     EXPECT_GT(hidden, 1000u) << "the ridge hides something";
     EXPECT_GT(found, hidden) << "and the reference found sight lines";
 }

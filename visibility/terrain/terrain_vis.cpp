@@ -8,6 +8,7 @@
 #include "visibility/worker_pool.h"
 
 #include <algorithm>
+#include <bit>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -57,6 +58,21 @@ Footprint footprint_of(const Aabb& box, const Heightfield& field)
     f.h = uint32_t(y1 - y0 + 1);
     f.top = box.max.z;
     return f;
+}
+
+// The footprint a source sweeps from: `f` grown to powers of two columns along each axis (within
+// the grid; shifted back from its edge), so that few parent tables serve every source. A larger
+// source only adds sight lines: still conservative.
+Footprint source_footprint(const Footprint& f, const Heightfield& field)
+{
+    if (!f.known())
+        return f;
+    Footprint s = f;
+    s.w = std::min<uint32_t>(std::bit_ceil(f.w), field.columns_x);
+    s.h = std::min<uint32_t>(std::bit_ceil(f.h), field.columns_y);
+    s.x = std::min<int32_t>(f.x, int32_t(field.columns_x - s.w));
+    s.y = std::min<int32_t>(f.y, int32_t(field.columns_y - s.h));
+    return s;
 }
 
 // Distances between the footprint (w x h columns at the origin) and the column at (dx, dy), in
@@ -221,51 +237,56 @@ Pvs bake_terrain_vis(const Zone& zone, const TerrainVisParams& params, TerrainVi
     // The world the portals and the reference take regions in (the zone's bounds and a margin):
     // a region open to the sky reaches above the zone's top, and sees more from there.
     const std::vector<Aabb> boxes = region_volume_boxes(zone.tree, zone.regions.size(), zone_portal_world(zone));
-    const Heightfield field = zone_heightfield(zone.tree, boxes, params.cell);
+    const size_t n = zone.regions.size();
+    // The grid, the footprints (exact, for the targets), the sources (footprints rounded up to
+    // powers of two, so few parent tables serve them) and the tables; a grid whose tables would
+    // pass the budget is made again with columns twice as wide.
+    Heightfield field;
+    std::vector<Footprint> footprints(n), source_of(n);
+    std::vector<uint32_t> order;
+    std::vector<size_t> source_first; // into order
+    std::map<std::pair<uint32_t, uint32_t>, std::unique_ptr<SweepTable>> tables;
+    size_t table_bytes = 0;
+    for (double cell = params.cell;; cell = 2.0 * std::max(field.cell_x, field.cell_y)) {
+        field = zone_heightfield(zone.tree, boxes, cell);
+        out.regions_without_box = 0;
+        for (size_t i = 0; i < n; ++i) {
+            footprints[i] = footprint_of(boxes[i], field);
+            source_of[i] = source_footprint(footprints[i], field);
+            out.regions_without_box += !footprints[i].known();
+        }
+        // Sources: regions with the same source footprint and top share a sweep and a row.
+        order.clear();
+        for (uint32_t i = 0; i < n; ++i)
+            if (footprints[i].known())
+                order.push_back(i);
+        std::sort(order.begin(), order.end(),
+                  [&](uint32_t a, uint32_t b) { return source_of[a].key() < source_of[b].key(); });
+        source_first.clear();
+        for (size_t i = 0; i < order.size(); ++i)
+            if (i == 0 || source_of[order[i]].key() != source_of[order[i - 1]].key())
+                source_first.push_back(i);
+        source_first.push_back(order.size());
+        tables.clear();
+        table_bytes = 0;
+        for (size_t s = 0; s + 1 < source_first.size() && table_bytes <= params.table_budget_bytes; ++s) {
+            const Footprint& f = source_of[order[source_first[s]]];
+            auto& table = tables[{f.w, f.h}];
+            if (!table) {
+                table = std::make_unique<SweepTable>(f.w, f.h, field);
+                table_bytes += table->memory_bytes();
+            }
+        }
+        if (table_bytes <= params.table_budget_bytes || (field.columns_x <= 1 && field.columns_y <= 1))
+            break;
+    }
     out.heightfield_seconds = seconds_since(start);
     out.columns_x = field.columns_x;
     out.columns_y = field.columns_y;
     out.cell_x = field.cell_x;
     out.cell_y = field.cell_y;
-
-    const size_t n = zone.regions.size();
-    std::vector<Footprint> footprints(n);
-    for (size_t i = 0; i < n; ++i) {
-        footprints[i] = footprint_of(boxes[i], field);
-        out.regions_without_box += !footprints[i].known();
-    }
-
-    // Sources: regions with the same footprint and top share a sweep and a row.
-    std::vector<uint32_t> order;
-    for (uint32_t i = 0; i < n; ++i)
-        if (footprints[i].known())
-            order.push_back(i);
-    std::sort(order.begin(), order.end(),
-              [&](uint32_t a, uint32_t b) { return footprints[a].key() < footprints[b].key(); });
-    std::vector<size_t> source_first; // into order
-    for (size_t i = 0; i < order.size(); ++i)
-        if (i == 0 || footprints[order[i]].key() != footprints[order[i - 1]].key())
-            source_first.push_back(i);
-    source_first.push_back(order.size());
     const size_t sources = source_first.size() - 1;
     out.sources = sources;
-
-    // One parent table per footprint size.
-    std::map<std::pair<uint32_t, uint32_t>, std::unique_ptr<SweepTable>> tables;
-    size_t table_bytes = 0;
-    for (size_t s = 0; s < sources; ++s) {
-        const Footprint& f = footprints[order[source_first[s]]];
-        auto& table = tables[{f.w, f.h}];
-        if (table)
-            continue;
-        table = std::make_unique<SweepTable>(f.w, f.h, field);
-        table_bytes += table->memory_bytes();
-        if (table_bytes > kMaxTerrainTableBytes)
-            throw std::invalid_argument("terrain: " + std::to_string(tables.size()) +
-                                        " footprint sizes on a grid of " + std::to_string(field.columns_x) + " x " +
-                                        std::to_string(field.columns_y) +
-                                        " columns need more than 512 MB of parent tables: use larger columns");
-    }
     out.footprint_sizes = tables.size();
 
     const Targets targets = flat_targets(footprints, field);
@@ -286,7 +307,7 @@ Pvs bake_terrain_vis(const Zone& zone, const TerrainVisParams& params, TerrainVi
             return Sweep{std::vector<double>(field.column_count()), std::vector<double>(field.column_count())};
         },
         [&](size_t s, Sweep& sweep) {
-            const Footprint& f = footprints[order[source_first[s]]];
+            const Footprint& f = source_of[order[source_first[s]]];
             sweep_from(field, *tables.at({f.w, f.h}), f, sweep);
             const uint32_t first = order[source_first[s]];
             std::span<uint64_t> row = std::span(matrix).subspan(size_t(first) * words, words);

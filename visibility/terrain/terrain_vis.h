@@ -55,6 +55,7 @@ struct TerrainVisParams {
     double cell = 0.0;   // heightfield column size (0: from the regions, terrain_heightfield.h)
     unsigned threads = 0; // 0 = all cores
     std::function<bool(double fraction)> progress; // false cancels
+    size_t table_budget_bytes = size_t(512) << 20;  // parent tables' memory before the grid coarsens
 };
 
 struct TerrainVisReport {
@@ -71,10 +72,11 @@ struct TerrainVisReport {
     size_t peak_bytes_estimate = 0;
 };
 
-// Throws std::invalid_argument for a zone without a tree or a region box (zone_heightfield), or
-// when the parent tables would take more than kMaxTerrainTableBytes (too many footprint sizes on
-// too fine a grid: give a larger cell).
-inline constexpr size_t kMaxTerrainTableBytes = size_t(512) << 20;
+// A source sweeps from its footprint grown to powers of two columns (a superset: conservative), so
+// few parent tables serve a zone of regions of many sizes; when the tables would still take more
+// than the budget (TerrainVisParams::table_budget_bytes), the grid is made again with columns twice as wide (a coarser
+// heightfield: looser, still conservative) until they fit. Throws std::invalid_argument for a zone
+// without a tree or a region box (zone_heightfield).
 Pvs bake_terrain_vis(const Zone& zone, const TerrainVisParams& params, TerrainVisReport* report = nullptr);
 
 } // namespace pvs
