@@ -17,6 +17,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <unistd.h>
@@ -88,6 +89,17 @@ int ambient_only(const VisCommandOptions& o, const std::string& map, std::FILE* 
     return 0;
 }
 
+// The first `count` bytes of the file (fewer when it is shorter): enough to tell the format by,
+// without reading a whole map that bake reads again.
+std::vector<uint8_t> read_file_head(const std::string& path, size_t count)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::vector<uint8_t> head(count);
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(count));
+    head.resize(size_t(in.gcount()));
+    return head;
+}
+
 // Writes `bytes` over the map through a temporary file beside it.
 void write_in_place(const std::string& map, const std::vector<uint8_t>& bytes)
 {
@@ -151,11 +163,8 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
         std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
         return 1;
     }
-    {
-        const std::vector<uint8_t> bytes = read_whole_file(map);
-        if (quake2::looks_like_ibsp38(bytes))
-            return quake2_vis(o, map, bytes, err, cancel);
-    }
+    if (quake2::looks_like_ibsp38(read_file_head(map, 8)))
+        return quake2_vis(o, map, read_whole_file(map), err, cancel);
     if (o.phs_only) {
         std::fprintf(err, "pvscope: error: --phs-only is for Quake 2 maps (IBSP 38); %s is not one\n", map.c_str());
         return 2;

@@ -155,6 +155,17 @@ void RegionBlocks::walk(uint32_t level, uint32_t node, Decide&& decide, Take&& t
         take(block, side);
 }
 
+// walk() from every node of the top level.
+template <class Decide, class Take>
+void RegionBlocks::walk_all(Decide&& decide, Take&& take) const
+{
+    if (level_size_.empty() || level_size_[0] == 0)
+        return;
+    const uint32_t top = uint32_t(level_size_.size() - 1);
+    for (uint32_t node = 0; node < level_size_[top]; ++node)
+        walk(top, node, decide, take);
+}
+
 // Sets in `out` the row's bits of every block `sides` calls Inside, a word at a time.
 void RegionBlocks::take_inside(std::span<const uint64_t> row, const std::vector<uint8_t>& sides,
                                std::span<uint64_t> out) const
@@ -194,11 +205,7 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
             keep &= keep - 1;
         }
     };
-    if (!level_size_.empty() && level_size_[0] > 0) {
-        const uint32_t top = uint32_t(level_size_.size() - 1);
-        for (uint32_t node = 0; node < level_size_[top]; ++node)
-            walk(top, node, decide, take);
-    }
+    walk_all(decide, take);
     take_inside(row, scratch.sides, taken);
     for (uint32_t r : odd_)
         if (bits::test(row, r) && regions.intersects(r, planes))
@@ -233,11 +240,7 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
                 bits::set(near, r);
         }
     };
-    if (!level_size_.empty() && level_size_[0] > 0) {
-        const uint32_t top = uint32_t(level_size_.size() - 1);
-        for (uint32_t node = 0; node < level_size_[top]; ++node)
-            walk(top, node, decide, take);
-    }
+    walk_all(decide, take);
     take_inside(row, scratch.sides, near);
     for (uint32_t r : odd_)
         if (bits::test(row, r) && regions.squared_distance(r, eye) <= limit)

@@ -58,6 +58,8 @@ public:
 private:
     template <class Decide, class Take>
     void walk(uint32_t level, uint32_t node, Decide&& decide, Take&& take) const;
+    template <class Decide, class Take>
+    void walk_all(Decide&& decide, Take&& take) const;
     void take_inside(std::span<const uint64_t> row, const std::vector<uint8_t>& sides, std::span<uint64_t> out) const;
 
     struct WordPart {

@@ -258,26 +258,29 @@ float box_distance(const Aabb& box, glm::vec3 p)
     return glm::length(d);
 }
 
+// Seeded cameras at region centres, looking anywhere level-ish, with the given far plane.
+std::vector<Camera> cameras_in_regions(const Zone& zone, size_t count, float far, uint32_t seed)
+{
+    std::vector<Camera> out;
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<size_t> region(0, zone.region_count() - 1);
+    std::uniform_real_distribution<float> yaw(0.0f, 360.0f), pitch(-30.0f, 30.0f);
+    while (out.size() < count) {
+        Camera c;
+        c.position = zone.regions[region(rng)].bounds.center();
+        c.yaw_degrees = yaw(rng);
+        c.pitch_degrees = pitch(rng);
+        c.far_distance = far;
+        out.push_back(c);
+    }
+    return out;
+}
+
 class CullOutdoor : public ::testing::Test {
 protected:
     static void SetUpTestSuite() { zone_ = new Zone(gen::generate_outdoor_zone({})); }
     static void TearDownTestSuite() { delete zone_; }
-    static std::vector<Camera> cameras(size_t count, float far)
-    {
-        std::vector<Camera> out;
-        std::mt19937 rng(11);
-        std::uniform_int_distribution<size_t> region(0, zone_->region_count() - 1);
-        std::uniform_real_distribution<float> yaw(0.0f, 360.0f), pitch(-30.0f, 30.0f);
-        while (out.size() < count) {
-            Camera c;
-            c.position = zone_->regions[region(rng)].bounds.center();
-            c.yaw_degrees = yaw(rng);
-            c.pitch_degrees = pitch(rng);
-            c.far_distance = far;
-            out.push_back(c);
-        }
-        return out;
-    }
+    static std::vector<Camera> cameras(size_t count, float far) { return cameras_in_regions(*zone_, count, far, 11); }
     static Zone* zone_;
 };
 Zone* CullOutdoor::zone_ = nullptr;
@@ -348,20 +351,7 @@ TEST(CullOutdoorBlocks, BlockStageDrawsExactlyWhatPerRegionTestsWould)
     const std::unique_ptr<Zone> zone_ = std::make_unique<Zone>(gen::generate_outdoor_zone(params));
     ASSERT_GE(zone_->region_count(), kBlocksFrom);
     std::mt19937 rng(17);
-    const auto cameras = [&](size_t count, float far) {
-        std::vector<Camera> out;
-        std::uniform_int_distribution<size_t> region(0, zone_->region_count() - 1);
-        std::uniform_real_distribution<float> yaw(0.0f, 360.0f), pitch(-30.0f, 30.0f);
-        while (out.size() < count) {
-            Camera c;
-            c.position = zone_->regions[region(rng)].bounds.center();
-            c.yaw_degrees = yaw(rng);
-            c.pitch_degrees = pitch(rng);
-            c.far_distance = far;
-            out.push_back(c);
-        }
-        return out;
-    };
+    const auto cameras = [&](size_t count, float far) { return cameras_in_regions(*zone_, count, far, uint32_t(rng())); };
     std::bernoulli_distribution keep(0.7);
     const Pvs pvs = Pvs::build(uint32_t(zone_->region_count()), [&](uint32_t r, std::span<uint64_t> row) {
         for (uint32_t c = 0; c < zone_->region_count(); ++c)

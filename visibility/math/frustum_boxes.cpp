@@ -92,27 +92,32 @@ bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
     return _mm_movemask_ps(outside) == 0;
 }
 
+unsigned FrustumBoxes::intersect_four(size_t at, const PlaneGroups& planes) const
+{
+    const __m128 lo_x = _mm_loadu_ps(&min_x_[at]), lo_y = _mm_loadu_ps(&min_y_[at]), lo_z = _mm_loadu_ps(&min_z_[at]);
+    const __m128 hi_x = _mm_loadu_ps(&max_x_[at]), hi_y = _mm_loadu_ps(&max_y_[at]), hi_z = _mm_loadu_ps(&max_z_[at]);
+    __m128 outside = _mm_setzero_ps();
+    for (int p = 0; p < planes.plane_count; ++p) {
+        const int g = p / 4, k = p % 4;
+        // intersects()'s sum, in the same order, for four boxes against plane p.
+        __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_set1_ps(planes.pos_x[g][k])),
+                              _mm_mul_ps(lo_x, _mm_set1_ps(planes.neg_x[g][k])));
+        d = _mm_add_ps(d, _mm_mul_ps(hi_y, _mm_set1_ps(planes.pos_y[g][k])));
+        d = _mm_add_ps(d, _mm_mul_ps(lo_y, _mm_set1_ps(planes.neg_y[g][k])));
+        d = _mm_add_ps(d, _mm_mul_ps(hi_z, _mm_set1_ps(planes.pos_z[g][k])));
+        d = _mm_add_ps(d, _mm_mul_ps(lo_z, _mm_set1_ps(planes.neg_z[g][k])));
+        d = _mm_sub_ps(d, _mm_set1_ps(planes.dist[g][k]));
+        outside = _mm_or_ps(outside, _mm_cmplt_ps(d, _mm_setzero_ps()));
+    }
+    return ~unsigned(_mm_movemask_ps(outside)) & 15u;
+}
+
 size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
 {
     const size_t n = boxes_.size();
     size_t kept = 0, i = 0;
     for (; i + 4 <= n; i += 4) {
-        const __m128 lo_x = _mm_loadu_ps(&min_x_[i]), lo_y = _mm_loadu_ps(&min_y_[i]), lo_z = _mm_loadu_ps(&min_z_[i]);
-        const __m128 hi_x = _mm_loadu_ps(&max_x_[i]), hi_y = _mm_loadu_ps(&max_y_[i]), hi_z = _mm_loadu_ps(&max_z_[i]);
-        __m128 outside = _mm_setzero_ps();
-        for (int p = 0; p < planes.plane_count; ++p) {
-            const int g = p / 4, k = p % 4;
-            // intersects()'s sum, in the same order, for four boxes against plane p.
-            __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_set1_ps(planes.pos_x[g][k])),
-                                  _mm_mul_ps(lo_x, _mm_set1_ps(planes.neg_x[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(hi_y, _mm_set1_ps(planes.pos_y[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(lo_y, _mm_set1_ps(planes.neg_y[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(hi_z, _mm_set1_ps(planes.pos_z[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(lo_z, _mm_set1_ps(planes.neg_z[g][k])));
-            d = _mm_sub_ps(d, _mm_set1_ps(planes.dist[g][k]));
-            outside = _mm_or_ps(outside, _mm_cmplt_ps(d, _mm_setzero_ps()));
-        }
-        const unsigned inside = ~unsigned(_mm_movemask_ps(outside)) & 15u;
+        const unsigned inside = intersect_four(i, planes);
         for (unsigned lane = 0; lane < 4; ++lane) { // branch-free append
             out[kept] = uint32_t(i + lane);
             kept += (inside >> lane) & 1u;
@@ -131,23 +136,7 @@ uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const Plan
     uint64_t mask = 0;
     uint32_t i = 0;
     for (; i + 4 <= count; i += 4) {
-        const size_t at = size_t(first) + i;
-        const __m128 lo_x = _mm_loadu_ps(&min_x_[at]), lo_y = _mm_loadu_ps(&min_y_[at]), lo_z = _mm_loadu_ps(&min_z_[at]);
-        const __m128 hi_x = _mm_loadu_ps(&max_x_[at]), hi_y = _mm_loadu_ps(&max_y_[at]), hi_z = _mm_loadu_ps(&max_z_[at]);
-        __m128 outside = _mm_setzero_ps();
-        for (int p = 0; p < planes.plane_count; ++p) {
-            const int g = p / 4, k = p % 4;
-            // intersects()'s sum, in the same order, for four boxes against plane p.
-            __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_set1_ps(planes.pos_x[g][k])),
-                                  _mm_mul_ps(lo_x, _mm_set1_ps(planes.neg_x[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(hi_y, _mm_set1_ps(planes.pos_y[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(lo_y, _mm_set1_ps(planes.neg_y[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(hi_z, _mm_set1_ps(planes.pos_z[g][k])));
-            d = _mm_add_ps(d, _mm_mul_ps(lo_z, _mm_set1_ps(planes.neg_z[g][k])));
-            d = _mm_sub_ps(d, _mm_set1_ps(planes.dist[g][k]));
-            outside = _mm_or_ps(outside, _mm_cmplt_ps(d, _mm_setzero_ps()));
-        }
-        mask |= uint64_t(~unsigned(_mm_movemask_ps(outside)) & 15u) << i;
+        mask |= uint64_t(intersect_four(size_t(first) + i, planes)) << i;
     }
     for (; i < count; ++i)
         mask |= uint64_t(intersects(first + i, planes)) << i;

@@ -99,6 +99,10 @@ public:
     size_t memory_bytes() const { return boxes_.capacity() * sizeof(PackedBox) + 6 * min_x_.capacity() * sizeof(float); }
 
 private:
+#if defined(__SSE2__)
+    // Bit i set when box at + i (i < 4) intersects: the SoA test collect_all and intersect_mask share.
+    unsigned intersect_four(size_t at, const PlaneGroups& planes) const;
+#endif
     struct alignas(32) PackedBox {
         float min[4];
         float max[4];
