@@ -1,5 +1,7 @@
 #include "ui/overlay_lines.h"
 
+#include "ui/overlay_layer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -53,44 +55,52 @@ bool clip_to_rect(double& x0, double& y0, double& x1, double& y1, double width, 
     return true;
 }
 
-void put_pixel(uint8_t* p, uint32_t rgb, uint32_t alpha)
-{
-    for (int c = 0; c < 3; ++c) {
-        const uint32_t line = (rgb >> (16 - 8 * c)) & 0xFF;
-        p[c] = alpha >= 255 ? uint8_t(line) : uint8_t((line * alpha + p[c] * (255 - alpha) + 127) / 255);
-    }
-    p[3] = 255;
-}
-
 int32_t pixel_index(double coordinate, uint32_t size)
 {
     return int32_t(std::clamp(std::floor(coordinate), 0.0, double(size - 1)));
 }
 
-} // namespace
-
-uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb, uint32_t alpha)
+bool image_ok(const Image& image)
 {
-    if (image.width == 0 || image.height == 0 || image.rgba.size() != size_t(image.width) * image.height * 4)
-        return 0;
+    return image.width > 0 && image.height > 0 && image.rgba.size() == size_t(image.width) * image.height * 4;
+}
+
+// The pixel ends of the segment a-b cut to the image. False when it misses the image or has a
+// non-finite end; a segment that only touches the right or bottom edge holds no pixel.
+struct PixelSpan {
+    int32_t x, y, xe, ye;
+    uint32_t steps() const { return uint32_t(std::max(std::abs(xe - x), std::abs(ye - y))); }
+};
+bool pixel_span(const Image& image, glm::vec2 a, glm::vec2 b, PixelSpan& span)
+{
     if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y))
-        return 0;
+        return false;
     double x0 = a.x, y0 = a.y, x1 = b.x, y1 = b.y;
     if (!clip_to_rect(x0, y0, x1, y1, double(image.width), double(image.height)))
-        return 0;
-    // A segment that only touches the right or bottom edge (x == width) holds no pixel.
+        return false;
     if ((x0 >= image.width && x1 >= image.width) || (y0 >= image.height && y1 >= image.height))
-        return 0;
+        return false;
+    span = {pixel_index(x0, image.width), pixel_index(y0, image.height), pixel_index(x1, image.width),
+            pixel_index(y1, image.height)};
+    return true;
+}
 
-    int32_t x = pixel_index(x0, image.width), y = pixel_index(y0, image.height);
-    const int32_t xe = pixel_index(x1, image.width), ye = pixel_index(y1, image.height);
+// Bresenham from (x, y) to (xe, ye), both pixels set; alpha_at(step) gives each pixel's alpha
+// (negative: the pixel is skipped). Returns how many pixels were set.
+template <class AlphaAt>
+uint32_t trace_pixels(Image& image, const PixelSpan& span, uint32_t rgb, AlphaAt&& alpha_at)
+{
+    int32_t x = span.x, y = span.y;
+    const int32_t xe = span.xe, ye = span.ye;
     const int32_t dx = std::abs(xe - x), dy = -std::abs(ye - y);
     const int32_t sx = x < xe ? 1 : -1, sy = y < ye ? 1 : -1;
     int32_t error = dx + dy;
     uint32_t set = 0;
-    for (;;) {
-        put_pixel(image.rgba.data() + (size_t(uint32_t(y)) * image.width + uint32_t(x)) * 4, rgb, alpha);
-        ++set;
+    for (uint32_t step = 0;; ++step) {
+        if (const int32_t alpha = alpha_at(step); alpha >= 0) {
+            blend_over(image.rgba.data() + (size_t(uint32_t(y)) * image.width + uint32_t(x)) * 4, rgb, uint32_t(alpha));
+            ++set;
+        }
         if (x == xe && y == ye)
             break;
         const int32_t e2 = 2 * error;
@@ -106,6 +116,16 @@ uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb, uint
     return set;
 }
 
+} // namespace
+
+uint32_t draw_line_2d(Image& image, glm::vec2 a, glm::vec2 b, uint32_t rgb, uint32_t alpha)
+{
+    PixelSpan span;
+    if (!image_ok(image) || !pixel_span(image, a, b, span))
+        return 0;
+    return trace_pixels(image, span, rgb, [alpha](uint32_t) { return int32_t(std::min<uint32_t>(alpha, 255)); });
+}
+
 LineProjection::LineProjection(const Camera& view)
     : to_view(view.view()), projection(view.projection()), near_distance(view.near_distance)
 {
@@ -118,32 +138,31 @@ uint32_t draw_line_3d(Image& image, const Camera& view, const glm::vec3& a, cons
 
 namespace {
 
-// The part of the projected segment pa-pb in the image, cut into pieces of at most
-// kDepthPiecePixels; each piece is drawn in full or as hidden_lines says, by the occlusion of
-// its middle point. wa/wb are the zone points of pa/pb and da/db their view-space depths: the
-// screen fraction s maps back to the segment at s*da / (s*da + (1-s)*db) (depth is linear in
-// 1/w on the screen, so the 3-D parameter is not s itself).
+// The projected segment pa-pb drawn once, its pixels taken kDepthPiecePixels at a time; each
+// piece is drawn in full or as hidden_lines says, by the occlusion of its middle point. wa/wb are
+// the zone points of pa/pb and da/db their view-space depths: the screen fraction s maps back to
+// the segment at s*da / (s*da + (1-s)*db) (depth is linear in 1/w on the screen, so the 3-D
+// parameter is not s itself).
 uint32_t draw_depth_tested(Image& image, const LineProjection& view, glm::vec2 pa, glm::vec2 pb,
                            const glm::vec3& wa, const glm::vec3& wb, float da, float db, uint32_t rgb)
 {
     double s0 = 0.0, s1 = 1.0;
-    if (!std::isfinite(pa.x) || !std::isfinite(pa.y) || !std::isfinite(pb.x) || !std::isfinite(pb.y) ||
+    PixelSpan span;
+    if (!pixel_span(image, pa, pb, span) ||
         !clip_params(pa.x, pa.y, pb.x, pb.y, double(image.width), double(image.height), s0, s1))
         return 0;
-    const glm::vec2 d = pb - pa;
-    const double length = double(glm::length(d)) * (s1 - s0);
-    const uint32_t pieces = uint32_t(std::clamp(std::ceil(length / kDepthPiecePixels), 1.0, 4096.0));
-    uint32_t set = 0;
-    for (uint32_t k = 0; k < pieces; ++k) {
-        const double from = s0 + (s1 - s0) * k / pieces, to = s0 + (s1 - s0) * (k + 1) / pieces;
-        const double mid = 0.5 * (from + to);
-        const double t = mid * da / (mid * da + (1.0 - mid) * db);
-        const bool hidden = view.occlusion->hidden(wa + (wb - wa) * float(t));
-        if (hidden && view.hidden_lines == HiddenLines::Hidden)
-            continue;
-        set += draw_line_2d(image, pa + d * float(from), pa + d * float(to), rgb, hidden ? kFaintLineAlpha : 255);
-    }
-    return set;
+    const double steps = std::max(1.0, double(span.steps()));
+    int32_t alpha = 255;
+    return trace_pixels(image, span, rgb, [&](uint32_t step) {
+        if (step % kDepthPiecePixels == 0) { // a new piece: its middle pixel decides for it
+            const double middle = std::min(steps, double(step) + 0.5 * (kDepthPiecePixels - 1)) / steps;
+            const double s = s0 + (s1 - s0) * middle;
+            const double t = s * da / (s * da + (1.0 - s) * db);
+            const bool hidden = view.occlusion->hidden(wa + (wb - wa) * float(t));
+            alpha = !hidden ? 255 : view.hidden_lines == HiddenLines::Hidden ? -1 : int32_t(kFaintLineAlpha);
+        }
+        return alpha;
+    });
 }
 
 } // namespace
@@ -175,8 +194,7 @@ uint32_t draw_line_3d(Image& image, const LineProjection& view, const glm::vec3&
         const glm::vec2 ndc(c.x / c.w, c.y / c.w);
         return glm::vec2((ndc.x * 0.5f + 0.5f) * w, (0.5f - ndc.y * 0.5f) * h);
     };
-    if (view.occlusion && view.hidden_lines != HiddenLines::Shown && image.width > 0 && image.height > 0 &&
-        image.rgba.size() == size_t(image.width) * image.height * 4)
+    if (view.occlusion && view.hidden_lines != HiddenLines::Shown && image_ok(image))
         return draw_depth_tested(image, view, to_pixel(va), to_pixel(vb), wa, wb, da, db, rgb);
     return draw_line_2d(image, to_pixel(va), to_pixel(vb), rgb);
 }

@@ -14,10 +14,10 @@
 //
 // Depth test: the picture's depth buffer stays inside Irrlicht, so a line is tested against the
 // zone's geometry instead (a LineOcclusion, ui/picture_occlusion.h: rays against the faces the
-// picture drew). The projected line is cut into pieces of at most kDepthPiecePixels pixels;
-// each piece's middle point, mapped back onto the 3-D segment perspective-correctly, decides
-// for the whole piece (one ray per piece, so an e1m1 frame with every overlay costs a few
-// thousand rays; a line's hidden part can start up to half a piece early or late). Hidden
+// picture drew). The projected line is drawn in one pass, its pixels taken kDepthPiecePixels at
+// a time; each piece's middle pixel, mapped back onto the 3-D segment perspective-correctly,
+// decides for the whole piece (one test per piece, so an e1m1 frame with every overlay costs a
+// few thousand; a line's hidden part can start up to half a piece early or late). Hidden
 // pieces are drawn faint (kFaintLineAlpha of the colour over the picture) or not at all.
 #pragma once
 

@@ -1,6 +1,8 @@
 #include "ui/zone_overlays.h"
 
+#include "ui/line_batch.h"
 #include "ui/overlay_fill.h"
+#include "ui/overlay_layer.h"
 #include "ui/overlay_lines.h"
 #include "visibility/math/frustum.h"
 
@@ -34,36 +36,49 @@ void paint_split_planes(Image& image, const OverlayScene& scene, const LineProje
     }
 }
 
-void paint_membership(Image& image, const OverlayScene& scene, const LineProjection& lines)
+// The boxes of the regions the picture's own frustum can show (an outdoor zone has tens of
+// thousands; drawing every one cost 40 ms a frame), culled first so the drawn and current boxes
+// end on top where edges meet.
+void collect_membership_boxes(const OverlayScene& scene, LineBatch& edges)
 {
     const Zone& zone = *scene.zone;
-    // Only boxes the picture's own frustum can show (an outdoor zone has tens of thousands: drawing
-    // every one cost 40 ms a frame), each classified once.
     const Frustum view = Frustum::from_view_projection(scene.view.view_projection());
-    static thread_local std::vector<uint32_t> by_class[4];
+    static thread_local std::vector<uint32_t> by_class[4], tints;
     for (std::vector<uint32_t>& list : by_class)
         list.clear();
+    membership_tints(zone, scene.cull_region, scene.visible, scene.after_pvs, tints);
     for (uint32_t r = 0; r < zone.region_count(); ++r)
         if (view.intersects(zone.regions[r].bounds))
-            by_class[size_t(classify_region(r, scene.cull_region, scene.visible, scene.after_pvs))].push_back(r);
-    // Culled first, so the drawn and current boxes end on top where edges meet.
+            by_class[tints[r] - kMembershipTintBase].push_back(r);
     for (Membership pass : {Membership::CulledByPvs, Membership::CulledByFrustum, Membership::Drawn,
                             Membership::Current})
         for (uint32_t r : by_class[size_t(pass)])
-            draw_box_3d(image, lines, zone.regions[r].bounds, membership_color(pass));
+            edges.add_box(zone.regions[r].bounds, membership_color(pass));
 }
 
-void paint_portals(Image& image, const OverlayScene& scene, const LineProjection& lines)
+void collect_region_bounds(const OverlayScene& scene, LineBatch& edges)
+{
+    for (uint32_t r : scene.visible)
+        if (r < scene.zone->region_count())
+            edges.add_box(scene.zone->regions[r].bounds, region_color(r));
+}
+
+// The outlines of the portals with a drawn region on either side.
+void collect_portals(const OverlayScene& scene, LineBatch& outlines)
 {
     if (!scene.portals)
         return;
+    static thread_local std::vector<bool> drawn;
+    drawn.assign(scene.zone->region_count(), false);
+    for (uint32_t r : scene.visible)
+        if (r < drawn.size())
+            drawn[r] = true;
+    const auto is_drawn = [&](int32_t r) { return r >= 0 && size_t(r) < drawn.size() && drawn[size_t(r)]; };
     const PortalSet& set = *scene.portals;
     for (const Portal& p : set.portals) {
-        const bool shown = (p.regions[0] >= 0 && contains(scene.visible, uint32_t(p.regions[0]))) ||
-                           (p.regions[1] >= 0 && contains(scene.visible, uint32_t(p.regions[1])));
-        if (!shown || size_t(p.first_point) + p.point_count > set.points.size())
+        if (!(is_drawn(p.regions[0]) || is_drawn(p.regions[1])) || size_t(p.first_point) + p.point_count > set.points.size())
             continue;
-        outline_polygon_3d(image, lines, std::span(set.points).subspan(p.first_point, p.point_count), kPortalColor);
+        outlines.add_outline(std::span(set.points).subspan(p.first_point, p.point_count), kPortalColor);
     }
 }
 
@@ -135,9 +150,18 @@ Membership classify_region(uint32_t region, int32_t current, std::span<const uin
 void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
                       std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out)
 {
-    out.resize(zone.region_count());
-    for (uint32_t r = 0; r < out.size(); ++r)
-        out[r] = kMembershipTintBase + uint32_t(classify_region(r, current, visible, after_pvs));
+    // classify_region's answers, a list at a time (a binary search per region cost milliseconds
+    // a frame on an outdoor zone).
+    out.assign(zone.region_count(), kMembershipTintBase + uint32_t(Membership::CulledByPvs));
+    const auto mark = [&](std::span<const uint32_t> regions, Membership membership) {
+        for (uint32_t r : regions)
+            if (r < out.size())
+                out[r] = kMembershipTintBase + uint32_t(membership);
+    };
+    mark(after_pvs, Membership::CulledByFrustum);
+    mark(visible, Membership::Drawn);
+    if (current >= 0 && size_t(current) < out.size())
+        out[size_t(current)] = kMembershipTintBase + uint32_t(Membership::Current);
 }
 
 uint32_t membership_color(Membership membership)
@@ -162,8 +186,29 @@ const char* membership_name(Membership membership)
     return "?";
 }
 
+uint32_t paint_line_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
+                             OverlayLines& lines)
+{
+    lines.membership_boxes.clear();
+    lines.region_bounds.clear();
+    lines.portals.clear();
+    if (!scene.zone || image.rgba.empty())
+        return 0;
+    if (settings.pvs_membership_boxes)
+        collect_membership_boxes(scene, lines.membership_boxes);
+    if (settings.region_bounds)
+        collect_region_bounds(scene, lines.region_bounds);
+    if (settings.portals)
+        collect_portals(scene, lines.portals);
+    LineProjection view(scene.view);
+    view.occlusion = scene.occlusion;
+    view.hidden_lines = settings.hidden_lines;
+    return lines.membership_boxes.draw(image, view) + lines.region_bounds.draw(image, view) +
+           lines.portals.draw(image, view);
+}
+
 void paint_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
-                    std::vector<OverlayLabel>& labels)
+                    std::vector<OverlayLabel>& labels, const Image* line_layer)
 {
     labels.clear();
     if (!scene.zone || image.rgba.empty())
@@ -173,14 +218,12 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
     lines.hidden_lines = settings.hidden_lines;
     if (settings.split_planes)
         paint_split_planes(image, scene, lines);
-    if (settings.pvs_membership_boxes)
-        paint_membership(image, scene, lines);
-    if (settings.region_bounds)
-        for (uint32_t r : scene.visible)
-            if (r < scene.zone->region_count())
-                draw_box_3d(image, lines, scene.zone->regions[r].bounds, region_color(r));
-    if (settings.portals)
-        paint_portals(image, scene, lines);
+    if (line_layer) {
+        composite_layer(*line_layer, image);
+    } else {
+        static thread_local OverlayLines scratch;
+        paint_line_overlays(image, settings, scene, scratch);
+    }
     for (uint32_t r : scene.edited_regions)
         if (r < scene.zone->region_count())
             draw_box_3d(image, lines, scene.zone->regions[r].bounds, kEditedPairColor);

@@ -24,6 +24,7 @@
 // IdBuffer pictures must stay face codes, so callers do not paint them.
 #pragma once
 
+#include "ui/line_batch.h"
 #include "ui/overlay_lines.h"
 #include "ui/software_renderer.h"
 #include "visibility/camera.h"
@@ -124,10 +125,24 @@ struct OverlayLabel {
     uint32_t rgb;
 };
 
+// The many-line overlays (membership boxes, region bounds, portals), their segments joined where
+// they share lines (ui/line_batch.h), drawn into `image`: the picture, or a transparent layer
+// (new_layer) that paint_overlays composites in their place, which a caller can draw while the
+// picture renders (the inspector does, on its second core: they need no picture, only the
+// scene's occlusion, which depends on the regions drawn, not on the pixels). `lines` is working
+// memory, reused across frames. Returns the pixels set.
+struct OverlayLines {
+    LineBatch membership_boxes, region_bounds, portals;
+};
+uint32_t paint_line_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
+                             OverlayLines& lines);
+
 // Draws the enabled overlays into `image` (back to front: planes, boxes, portals, zone lines,
-// frustum) and replaces `labels` with the labels to draw over it.
+// frustum) and replaces `labels` with the labels to draw over it. With `line_layer`, the
+// many-line overlays are that layer (paint_line_overlays into new_layer) composited over the
+// planes instead of being drawn here.
 void paint_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
-                    std::vector<OverlayLabel>& labels);
+                    std::vector<OverlayLabel>& labels, const Image* line_layer = nullptr);
 
 // The legend: a name and colour per colour the enabled overlays use, in drawing order.
 struct LegendEntry {

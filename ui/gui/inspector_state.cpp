@@ -1,6 +1,7 @@
 #include "ui/gui/inspector_state.h"
 
 #include "ui/gui/camera_math.h"
+#include "visibility/math/frustum.h"
 #include "visibility/region_lookup.h"
 #include "wld/gen/demo_zone.h"
 #include "wld/zone_file.h"
@@ -286,19 +287,34 @@ const CullStats& InspectorState::frame()
     update_after_pvs();
     try {
         ensure_renderer();
-        if (overlays.pvs_membership && render_mode != ui::RenderMode::IdBuffer) {
-            // Every region, tinted by its part in this frame's culling: the depth test decides
-            // which of them show, so a red (PVS-culled) face in sight is a region the PVS drops.
-            all_regions_.resize(zone_->region_count());
-            for (uint32_t r = 0; r < all_regions_.size(); ++r)
-                all_regions_[r] = r;
+        const bool tinted = overlays.pvs_membership && render_mode != ui::RenderMode::IdBuffer;
+        if (tinted) {
+            // Every region the picture's frustum holds (the culler's own test: the others cannot
+            // show), tinted by its part in this frame's culling: the depth test decides which of
+            // them show, so a red (PVS-culled) face in sight is a region the PVS drops.
+            const Frustum picture = Frustum::from_view_projection(view_.view_projection());
+            picture_regions_.clear();
+            for (uint32_t r = 0; r < zone_->region_count(); ++r)
+                if (picture.intersects(zone_->regions[r].bounds))
+                    picture_regions_.push_back(r);
             ui::membership_tints(*zone_, last_cull_.region, visible_, after_pvs_, region_tints_);
-            image_ = renderer_->render(*zone_, view_, all_regions_, render_mode, region_tints_);
-        } else {
-            image_ = renderer_->render(*zone_, view_, visible_, render_mode);
         }
+        // The many-line overlays need no picture: they are drawn into a layer on the second
+        // core while the picture renders, and composited in their place (ui/overlay_layer.h).
+        ui::OverlayScene scene = overlay_scene();
+        std::future<void> layer_job;
+        if (render_mode != ui::RenderMode::IdBuffer &&
+            (overlays.pvs_membership_boxes || overlays.region_bounds || overlays.portals))
+            layer_job = std::async(std::launch::async, [&] { paint_line_layer(scene); });
+        if (tinted)
+            image_ = renderer_->render(*zone_, view_, picture_regions_, render_mode, region_tints_);
+        else
+            image_ = renderer_->render(*zone_, view_, visible_, render_mode);
+        const bool layered = layer_job.valid();
+        if (layered)
+            layer_job.get();
         last_render_ = renderer_->last_stats();
-        paint_overlays();
+        paint_overlays(scene, layered ? &line_layer_ : nullptr);
     } catch (const std::exception& e) { // no renderer, or an ID render of a zone too large to encode
         error_ = e.what();
         image_ = {};

@@ -26,6 +26,7 @@
 #include "ui/gui/bake_job.h"
 #include "ui/gui/compare_job.h"
 #include "ui/gui/frame_history.h"
+#include "ui/overlay_layer.h"
 #include "ui/picture_occlusion.h"
 #include "ui/software_renderer.h"
 #include "ui/zone_overlays.h"
@@ -301,7 +302,12 @@ private:
     void adopt_zone(std::unique_ptr<Zone> zone, double load_ms);
     void ensure_renderer();
     void rebuild_culler();
-    void paint_overlays();
+    // The overlays' scene, all but the picture's occlusion (set where it is drawn with); the
+    // many-line overlays into line_layer_ (run while the picture renders); the overlays over
+    // the picture, with that layer or drawing those lines themselves (null).
+    ui::OverlayScene overlay_scene();
+    void paint_line_layer(ui::OverlayScene& scene);
+    void paint_overlays(ui::OverlayScene& scene, const ui::Image* line_layer);
     void update_after_pvs();
     void take_finished_portals();
     std::span<const uint32_t> drawn_regions() const; // what the picture drew this frame
@@ -337,8 +343,10 @@ private:
     std::optional<glm::vec3> orbit_target_;
 
     std::vector<uint32_t> after_pvs_;
-    std::vector<uint32_t> all_regions_, region_tints_; // the membership tint's frame lists
+    std::vector<uint32_t> picture_regions_, region_tints_; // the membership tint's frame lists
     std::vector<ui::OverlayLabel> labels_;
+    ui::OverlayLines overlay_lines_; // paint_line_layer's working memory
+    ui::Image line_layer_;
     std::vector<PathStep> path_;
     std::vector<uint32_t> path_nodes_;
     std::optional<std::vector<Winding>> node_polygons_;

@@ -115,11 +115,8 @@ void InspectorState::update_after_pvs()
     culler_->cull(cull_, {pvs_stage ? CullMode::Pvs : CullMode::None, false}, after_pvs_);
 }
 
-void InspectorState::paint_overlays()
+ui::OverlayScene InspectorState::overlay_scene()
 {
-    labels_.clear();
-    if (render_mode == ui::RenderMode::IdBuffer)
-        return; // its pixels are face codes
     ui::OverlayScene scene;
     scene.zone = zone_.get();
     scene.view = view_;
@@ -137,19 +134,35 @@ void InspectorState::paint_overlays()
         request_portals();
         scene.portals = ready_portals();
     }
-    if (overlays.hidden_lines != ui::HiddenLines::Shown)
-        scene.occlusion = picture_occlusion();
     update_edited_pairs();
     scene.edited_regions = edited_pairs_;
     scene.pair = explanation_ ? &pair_overlay_ : nullptr;
-    ui::paint_overlays(image_, overlays, scene, labels_);
+    return scene;
+}
+
+void InspectorState::paint_line_layer(ui::OverlayScene& scene)
+{
+    if (overlays.hidden_lines != ui::HiddenLines::Shown)
+        scene.occlusion = picture_occlusion(); // depends on the regions drawn, not on the pixels
+    line_layer_ = ui::new_layer(width_, height_);
+    ui::paint_line_overlays(line_layer_, overlays, scene, overlay_lines_);
+}
+
+void InspectorState::paint_overlays(ui::OverlayScene& scene, const ui::Image* line_layer)
+{
+    labels_.clear();
+    if (render_mode == ui::RenderMode::IdBuffer)
+        return; // its pixels are face codes
+    if (overlays.hidden_lines != ui::HiddenLines::Shown)
+        scene.occlusion = picture_occlusion();
+    ui::paint_overlays(image_, overlays, scene, labels_, line_layer);
     overlay_depth_rays_ = occlusion_ && scene.occlusion ? occlusion_->rays() : 0;
 }
 
 std::span<const uint32_t> InspectorState::drawn_regions() const
 {
     const bool tinted = overlays.pvs_membership && render_mode != ui::RenderMode::IdBuffer;
-    return tinted ? std::span<const uint32_t>(all_regions_) : std::span<const uint32_t>(visible_);
+    return tinted ? std::span<const uint32_t>(picture_regions_) : std::span<const uint32_t>(visible_);
 }
 
 const ui::PictureOcclusion* InspectorState::picture_occlusion()
@@ -166,7 +179,7 @@ const ui::PictureOcclusion* InspectorState::picture_occlusion()
         }
     }
     if (occlusion_frame_ != frame_number_) {
-        occlusion_->set_frame(*zone_, view_, image_.width, image_.height, drawn_regions());
+        occlusion_->set_frame(*zone_, view_, width_, height_, drawn_regions()); // the size being rendered
         occlusion_frame_ = frame_number_;
     }
     return occlusion_.get();
