@@ -50,10 +50,17 @@ struct ZoneLine {
     Aabb bounds;        // the trigger volume, when known
 };
 
+// Region::vis_contents for formats whose vis does not follow the flags' rule (media.h).
+inline constexpr uint16_t kNoVisContents = 0xFFFF;
+
 struct Region {
     Aabb bounds;            // bounds of the region's volume (or of its geometry where the volume is unknown)
     uint32_t flags = 0;     // RegionFlag bits
     int32_t zone_line = -1; // index into Zone::zone_lines, or -1
+    // Quake 2: the leaf's contents as its vis compares them (media.h, quake2_sight): the low
+    // byte its visible contents, the high byte the same with translucent and detail contents
+    // cleared. kNoVisContents for every other format.
+    uint16_t vis_contents = kNoVisContents;
 };
 
 // How a point exactly on a split plane (signed distance == 0) is classified. Formats differ,
@@ -97,6 +104,7 @@ enum MaterialFlag : uint32_t {
     kMaterialSky = 1u << 0,
     kMaterialLiquid = 1u << 1,    // warping water/slime/lava/teleport surface
     kMaterialInvisible = 1u << 2, // not drawn (EverQuest transparent / trigger surfaces)
+    kMaterialTranslucent = 1u << 3, // drawn, but hides nothing behind it (Quake 2 glass: SURF_TRANS33/66)
 };
 
 struct Material {

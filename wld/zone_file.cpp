@@ -9,6 +9,8 @@
 #include "wld/obj/obj_reader.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"
+#include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/ibsp38_zone.h"
 
 #include <filesystem>
 
@@ -70,15 +72,12 @@ Zone load_obj_zone(const std::string& obj_path, std::string hepvs_path, const Zo
     return zone;
 }
 
-// What an "IBSP" file is, by its version, and why it is not opened here.
+// Why an "IBSP" file that is not Quake 2's is not opened here.
 std::string ibsp_not_supported(std::span<const uint8_t> bytes)
 {
     if (bytes.size() < 8)
         return "an IBSP header too short for its version";
     const uint32_t version = uint32_t(bytes[4]) | uint32_t(bytes[5]) << 8 | uint32_t(bytes[6]) << 16 | uint32_t(bytes[7]) << 24;
-    if (version == 38)
-        return "a Quake 2 map (IBSP 38): pvscope reads its clusters and its PVS and PHS rows, not yet its geometry, "
-               "so it cannot be opened as a zone";
     if (version == 46)
         return "a Quake 3 map (IBSP 46) is not supported";
     return "IBSP version " + std::to_string(version) + " (neither Quake 2's 38 nor Quake 3's 46) is not supported";
@@ -106,6 +105,8 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
         attach_sibling_prt(zone, path);
         return zone;
     }
+    if (quake2::looks_like_ibsp38(bytes))
+        return quake2::load_ibsp38(bytes, path);
     if (bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "IBSP"))
         throw FileError(path, 0, ibsp_not_supported(bytes));
     if (bytes.size() >= 4 && (std::equal(bytes.begin(), bytes.begin() + 4, "BSP2") ||
@@ -115,7 +116,7 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
         throw FileError(path, 0, "Half-Life BSP 30 is not supported");
     if (eq::looks_like_pfs(bytes))
         return eq::load_eq_zone(bytes, path);
-    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29, EverQuest S3D, Doom WAD with GL "
+    throw FileError(path, 0, "unknown file format (supported: Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, EverQuest S3D, Doom WAD with GL "
                              "nodes, Wavefront .obj with HateEngine .hepvs)");
 }
 

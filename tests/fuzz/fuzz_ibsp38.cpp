@@ -1,11 +1,13 @@
 // libFuzzer target: Quake 2 maps, IBSP 38 (wld/quake2/ibsp38_file.h): the lump directory, the
 // leaves and the visibility lump. An accepted file's rows have the sizes its cluster count says,
 // both PHS rules run on them and only add bits to the PVS (wld/quake2/phs.h), and the file
-// written again with its rows (ibsp38_writer.h) reads back with the same leaves and rows.
+// written again with its rows (ibsp38_writer.h) reads back with the same leaves and rows. The same
+// bytes opened as a zone (ibsp38_zone.h) load consistent or throw FileError.
 #include "tests/fuzz/fuzz_support.h"
 #include "visibility/bit_row.h"
 #include "wld/quake2/ibsp38_file.h"
 #include "wld/quake2/ibsp38_writer.h"
+#include "wld/quake2/ibsp38_zone.h"
 #include "wld/quake2/phs.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -29,5 +31,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
                          "the rows written read back");
         fuzz::fuzz_check(back.leaves.size() == f.leaves.size(), "the leaves written read back");
     });
+    fuzz::accepts([&] { fuzz::check_zone(quake2::load_ibsp38({data, size}, "fuzz.bsp")); });
     return 0;
 }

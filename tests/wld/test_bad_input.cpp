@@ -1,4 +1,5 @@
-// Bad input never crashes, hangs or reads out of bounds: every real file truncated at 200 cut
+// Bad input never crashes, hangs or reads out of bounds: every real file (Quake BSP 29 / BSP2 /
+// 2PSB, Quake 2 IBSP 38) truncated at 200 cut
 // points and with 200 seeded random byte changes either loads into a consistent zone or throws
 // FileError naming the file. The CI runs this under AddressSanitizer + UBSan.
 // Plus hand-made corruptions, each with the message a user should see.
@@ -6,6 +7,8 @@
 #include "visibility/file_error.h"
 #include "visibility/region_lookup.h"
 #include "wld/quake/bsp29_reader.h"
+#include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/ibsp38_zone.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
@@ -40,7 +43,8 @@ void expect_consistent(const Zone& zone)
 bool load_or_file_error(const std::vector<uint8_t>& bytes, const std::string& name)
 {
     try {
-        const Zone zone = quake::load_bsp29(bytes, name);
+        const Zone zone =
+            quake2::looks_like_ibsp38(bytes) ? quake2::load_ibsp38(bytes, name) : quake::load_bsp29(bytes, name);
         expect_consistent(zone);
         return true;
     } catch (const FileError& e) {
@@ -88,7 +92,10 @@ INSTANTIATE_TEST_SUITE_P(SharedData, BadQuakeFile,
                          ::testing::Values("quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/dm2.bsp",
                                            "quake/start.bsp", "quake/end.bsp", "visdemo/example.bsp",
                                            "modern-quake/q1/lqdm2-bsp2.ericw-vis.bsp",
-                                           "modern-quake/q1/lqdm2-2psb.ericw-vis.bsp"),
+                                           "modern-quake/q1/lqdm2-2psb.ericw-vis.bsp",
+                                           "modern-quake/q2/q2_liquids.ericw-vis.bsp",
+                                           "modern-quake/q2/q2_tjunc_matrix.ericw-vis.bsp",
+                                           "modern-quake/q2/q2_areaportals.bsp"),
                          [](const ::testing::TestParamInfo<const char*>& param) {
                              std::string name = test::param_name(param.param);
                              for (char& c : name)

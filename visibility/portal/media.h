@@ -10,6 +10,14 @@
 //  - None: sky is opaque to vis; a sky region sees nothing but itself (id's shipped maps).
 // Solid and outside leaves are not regions and see nothing; callers check that first.
 // The rule is symmetric: sees_through(a, b) == sees_through(b, a).
+//
+// Quake 2 has its own rule (qbsp's Portal_VisFlood), on the contents of the leaves' clusters
+// (Region::vis_contents): sight crosses between two leaves when their visible contents (window,
+// aux, lava, slime, water, mist) are the same, or are the same once contents marked translucent
+// or detail are counted as clear. So a plain water surface blocks vis (Quake 2 maps make water
+// see-through by marking it translucent: SURF_TRANS33/66 gives CONTENTS_TRANSLUCENT), and glass
+// (window + translucent) does not. regions_see_through applies it when both regions carry
+// contents, the flags' rule otherwise.
 #pragma once
 
 #include "visibility/zone.h"
@@ -50,6 +58,20 @@ constexpr bool sees_through(Medium a, Medium b, SkyPortals sky)
         return false;
     }
     return true; // air <-> air, air <-> liquid, liquid <-> liquid: liquids are translucent
+}
+
+// Quake 2's rule on two leaves' vis_contents (above).
+constexpr bool quake2_sight(uint16_t a, uint16_t b)
+{
+    return (a & 0xFF) == (b & 0xFF) || (a >> 8) == (b >> 8);
+}
+
+// Whether sight may pass from region `a` straight into its neighbour `b` (not the same region).
+constexpr bool regions_see_through(const Region& a, const Region& b, SkyPortals sky)
+{
+    if (a.vis_contents != kNoVisContents && b.vis_contents != kNoVisContents)
+        return quake2_sight(a.vis_contents, b.vis_contents);
+    return sees_through(medium_of(a.flags), medium_of(b.flags), sky);
 }
 
 } // namespace pvs

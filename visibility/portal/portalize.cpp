@@ -220,8 +220,7 @@ PortalSet build_portals(const BspTree& tree, const std::vector<Region>& regions,
                     ++stats.pieces_tiny;
                     return;
                 }
-                if (!sees_through(medium_of(regions[size_t(rf)].flags), medium_of(regions[size_t(rb)].flags),
-                                  options.sky)) {
+                if (!regions_see_through(regions[size_t(rf)], regions[size_t(rb)], options.sky)) {
                     ++stats.pieces_sky;
                     return;
                 }

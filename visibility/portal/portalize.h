@@ -109,7 +109,7 @@ struct PortalStats {
     size_t pieces_outside = 0;       // pieces between an open or outside leaf and an outside leaf
     size_t pieces_same_region = 0;   // pieces with one region on both sides
     size_t pieces_tiny = 0;          // pieces between two open leaves with no area (see min_area)
-    size_t pieces_sky = 0;           // pieces at a sky leaf dropped by §2.6 (PortalOptions::sky)
+    size_t pieces_sky = 0;           // pieces sight cannot cross (media.h: a sky leaf, PortalOptions::sky; a Quake 2 content boundary)
     size_t portals = 0;              // pieces kept: PortalSet::portals.size()
     // Open leaves (leaf_region >= 0) whose cell has a face, of more than min_area, on the world
     // box or shared with a kLeafOutside leaf. Sorted, no duplicates. Empty for a sealed zone.

@@ -29,7 +29,7 @@ TreeTracer::TreeTracer(const BspTree& tree, const std::vector<Region>& regions, 
                           {n.children[0], n.children[1]}});
     medium_.reserve(regions.size());
     for (const Region& r : regions)
-        medium_.push_back(uint8_t(medium_of(r.flags)));
+        medium_.push_back({uint8_t(medium_of(r.flags)), r.vis_contents});
     // A tree with no node and no leaf has nothing to walk; a one-leaf tree's root is ~0.
     const bool root_ok = BspTree::is_leaf(tree.root) ? !tree.leaf_region.empty() : size_t(tree.root) < tree.nodes.size();
     root_ = root_ok ? tree.root : kNoRoot;

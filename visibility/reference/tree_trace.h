@@ -85,7 +85,13 @@ public:
     // Whether a line may pass from region `from` into region `to` (media.h; same region: yes).
     bool passes(int32_t from, int32_t to) const
     {
-        return from == to || sees_through(Medium(medium_[size_t(from)]), Medium(medium_[size_t(to)]), sky_);
+        if (from == to)
+            return true;
+        const RegionMedium& a = medium_[size_t(from)];
+        const RegionMedium& b = medium_[size_t(to)];
+        if (a.vis_contents != kNoVisContents && b.vis_contents != kNoVisContents)
+            return quake2_sight(a.vis_contents, b.vis_contents);
+        return sees_through(Medium(a.medium), Medium(b.medium), sky_);
     }
 
 private:
@@ -107,7 +113,11 @@ private:
 
     std::vector<Node> nodes_;
     std::vector<int32_t> leaf_region_;
-    std::vector<uint8_t> medium_; // Medium per region
+    struct RegionMedium {
+        uint8_t medium;        // Medium
+        uint16_t vis_contents; // Region::vis_contents
+    };
+    std::vector<RegionMedium> medium_; // per region
     int32_t root_ = kNoRoot;
     bool ties_go_front_ = false;
     SkyPortals sky_ = SkyPortals::SkyToSky;
