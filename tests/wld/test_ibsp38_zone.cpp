@@ -172,8 +172,9 @@ TEST(Quake2ZoneRules, PlainLiquidsAndGlassBlockSightTranslucentOnesDoNot)
             if (p.regions[0] != int32_t(r) && p.regions[1] != int32_t(r))
                 continue;
             const uint32_t other = uint32_t(p.regions[0] == int32_t(r) ? p.regions[1] : p.regions[0]);
-            if (!translucent)
+            if (!translucent) {
                 EXPECT_EQ(zone.regions[other].vis_contents, contents) << "a plain liquid sees only its own kind";
+            }
         }
     }
     EXPECT_GE(plain_liquid_regions, 4u) << "window, lava, slime, water";
