@@ -25,6 +25,8 @@
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp29_vis_writer.h"
 #include "wld/quake/prt_file.h"
+#include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/ibsp38_zone.h"
 #include "wld/zone_file.h"
 
 // The whole CLI11 (not only App.hpp): its config and formatter classes are header-only, and a
@@ -46,7 +48,7 @@ namespace pvs::app {
 
 namespace {
 
-enum class InputFormat { QuakeBsp, EqS3d, ObjHepvs, DoomWad };
+enum class InputFormat { QuakeBsp, Quake2Bsp, EqS3d, ObjHepvs, DoomWad };
 
 struct Input {
     InputFormat format;
@@ -63,8 +65,9 @@ struct Input {
 
 const char* format_name(InputFormat f)
 {
-    return f == InputFormat::QuakeBsp ? "Quake BSP 29"
-           : f == InputFormat::EqS3d  ? "EverQuest S3D"
+    return f == InputFormat::QuakeBsp    ? "Quake BSP 29"
+           : f == InputFormat::Quake2Bsp ? "Quake 2 BSP (IBSP 38)"
+           : f == InputFormat::EqS3d     ? "EverQuest S3D"
            : f == InputFormat::DoomWad ? "Doom WAD + GL nodes"
                                        : "OBJ + .hepvs";
 }
@@ -75,7 +78,9 @@ std::string format_extension(const Input& in)
 {
     if (in.format == InputFormat::DoomWad)
         return lowercase_extension(in.doom_source.gl_path);
-    return in.format == InputFormat::QuakeBsp ? ".bsp" : in.format == InputFormat::EqS3d ? ".s3d" : ".hepvs";
+    return in.format == InputFormat::QuakeBsp || in.format == InputFormat::Quake2Bsp ? ".bsp"
+           : in.format == InputFormat::EqS3d                                           ? ".s3d"
+                                                                                       : ".hepvs";
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -182,10 +187,13 @@ Input load_input(const BakeOptions& o)
     const std::vector<uint8_t> bytes = read_whole_file(path);
     if (quake::looks_like_bsp29(bytes))
         return Input(InputFormat::QuakeBsp, quake::load_bsp29(bytes, path));
+    if (quake2::looks_like_ibsp38(bytes))
+        return Input(InputFormat::Quake2Bsp, quake2::load_ibsp38(bytes, path));
     if (eq::looks_like_pfs(bytes))
         return Input(InputFormat::EqS3d, eq::load_eq_zone(bytes, path));
     load_zone(path); // throws the loader's message for formats it recognises but cannot read
-    throw FileError(path, 0, "bake writes Quake BSP 29, EverQuest S3D, Doom GL_PVS and OBJ + .hepvs only");
+    throw FileError(path, 0, "bake writes Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, EverQuest S3D, Doom GL_PVS and "
+                             "OBJ + .hepvs only");
 }
 
 // A portal bake reads the tree, the regions and their flags, never the faces. So a Quake map's
@@ -417,7 +425,7 @@ void choose_clusters(const BakeOptions& o, const Input& in, BakeRun& run, std::F
 {
     if (o.clusters != "auto" || run.clusters) // a PRT2 file's own clusters are used
         return;
-    if (in.format == InputFormat::QuakeBsp) {
+    if (in.format == InputFormat::QuakeBsp || in.format == InputFormat::Quake2Bsp) {
         std::fprintf(err, "note: --clusters auto: a Quake map is baked per leaf (its PVS is per leaf)\n");
         return;
     }

@@ -13,6 +13,10 @@
 #include "wld/obj/obj_reader.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp29_vis_writer.h"
+#include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/quake2_vis.h"
+
+#include <cstdio>
 
 #include <filesystem>
 
@@ -70,6 +74,14 @@ PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& l
         return {"wrote " + out_path + ": " + std::to_string(stats.rows) + " rows, " + std::to_string(stats.unique_rows) +
                     " distinct, " + std::to_string(stats.visdata_bytes) + " bytes of visdata" + sounds,
                 {}};
+    }
+    if (quake2::looks_like_ibsp38(bytes)) {
+        const quake2::Quake2ZonePvsResult q = quake2::write_quake2_zone_pvs(bytes, path, zone, pvs);
+        write_whole_file(out_path, q.map);
+        char line[160];
+        std::snprintf(line, sizeof line, ": %u clusters (the leaves' rows ORed per cluster), mean %.1f visible, %.1f hearable",
+                      q.clusters, q.mean_visible, q.mean_hearable);
+        return {"wrote " + out_path + line, {}};
     }
     if (doom::looks_like_wad(bytes))
         return write_gl_pvs_of(zone, load, pvs, out_path);

@@ -7,7 +7,9 @@
 //   EverQuest S3D -> the zone written again with the rows as its VISLISTs (convert.h);
 //   OBJ + .hepvs  -> a .hepvs of the zone's grid (hepvs/hepvs_zone.h);
 //   Doom WAD      -> a copy of the file holding the map's GL nodes with GL_PVS set
-//                    (doom/gl_pvs_writer.h).
+//                    (doom/gl_pvs_writer.h);
+//   Quake 2 map   -> the .bsp with a visibility lump over its clusters (the leaves' rows ORed
+//                    per cluster) and the PHS made from it (quake2/quake2_vis.h).
 // The format is recognised from the zone's own file (zone.source.path, opened again with `load`
 // for a Doom map). Throws FileError for a zone that has no file (a generated zone) or a file
 // that changed since, std::invalid_argument for a PVS of the wrong size.

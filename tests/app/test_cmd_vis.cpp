@@ -218,6 +218,47 @@ TEST_F(VisCommand, Quake2MapsGetPvsAndPhsOverClusters)
     }
 }
 
+// `bake` on a Quake 2 map: portals from the tree per leaf (Quake 2's content rule), the leaves'
+// rows ORed per cluster. Every cluster row holds no cluster ericw's lacks (ericw's clusters see
+// through detail brushes; the tree's leaves do not), the two maps without detail get ericw's rows
+// exactly, the PHS is Quake 2's rule of them, and every other lump is the map's own.
+TEST_F(VisCommand, Quake2BakeFromTheTreeWithinEricwsRows)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_liquids.bsp");
+    for (const char* name : {"q2_areaportals", "q2_liquids", "q2_tjunc_matrix"}) {
+        const std::string base = std::string("modern-quake/q2/") + name;
+        const std::string map = copy({(base + ".bsp").c_str()});
+        ASSERT_FALSE(map.empty());
+        app::BakeOptions options;
+        options.input = map;
+        options.output = path(std::string(name) + ".baked.bsp");
+        options.threads = 2;
+        ASSERT_EQ(run(options), 0) << name;
+        const std::vector<uint8_t> before = read_bytes(map), after = read_bytes(options.output);
+        const quake2::Ibsp38File in = quake2::read_ibsp38(before, map), out = quake2::read_ibsp38(after, map);
+        const quake2::Ibsp38File ericw = quake2::read_ibsp38(read_bytes(*find_shared_data(base + ".ericw-vis.bsp")), name);
+        ASSERT_EQ(out.clusters, ericw.clusters) << name;
+        size_t fewer = 0;
+        for (size_t w = 0; w < out.pvs_rows.size(); ++w) {
+            EXPECT_EQ(out.pvs_rows[w] & ~ericw.pvs_rows[w], 0u) << name << " word " << w;
+            fewer += std::popcount(ericw.pvs_rows[w] & ~out.pvs_rows[w]);
+        }
+        if (std::string(name) == "q2_tjunc_matrix") {
+            EXPECT_GT(fewer, 500u) << "per-leaf portals through its detail brushes";
+        } else {
+            EXPECT_EQ(out.pvs_rows, ericw.pvs_rows) << name;
+        }
+        EXPECT_EQ(out.phs_rows, quake2::compute_phs(out.pvs_rows, out.clusters, quake2::PhsRule::Quake2)) << name;
+        for (int lump = 0; lump < quake2::kIbsp38LumpCount; ++lump) {
+            if (lump == quake2::kQ2LumpVisibility)
+                continue;
+            const auto a = std::span(before).subspan(in.lumps[lump].offset, in.lumps[lump].length);
+            const auto b = std::span(after).subspan(out.lumps[lump].offset, out.lumps[lump].length);
+            EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << name << " lump " << lump;
+        }
+    }
+}
+
 // -phsonly with ericw's rule on ericw's own output: the PVS kept, the PHS ericw's byte for byte
 // (decoded rows and their stored lengths); with Quake 2's rule the PHS holds ericw's.
 TEST_F(VisCommand, Quake2PhsOnlyRebuildsEricwsPhs)

@@ -167,10 +167,14 @@ std::vector<int32_t> read_regions(const Q2& q, Zone& zone)
     const std::vector<uint8_t> reached = world_leaves(zone.tree, leaves.size());
     zone.tree.leaf_region.assign(leaves.size(), kLeafSolid);
     // Vis compares clusters, not leaves: a cluster's contents are those of all its leaves ORed
-    // (qbsp's ClusterContents), so one translucent leaf makes its whole cluster clear.
-    std::vector<int32_t> cluster_contents(size_t(q.file.clusters), 0);
+    // (qbsp's ClusterContents), so one translucent leaf makes its whole cluster clear. Clusters
+    // as the leaves number them (an unvised map has no count in its visibility lump).
+    int32_t highest_cluster = -1;
     for (const Q2Leaf& leaf : leaves)
-        if (leaf.cluster >= 0 && uint32_t(leaf.cluster) < cluster_contents.size())
+        highest_cluster = std::max<int32_t>(highest_cluster, leaf.cluster);
+    std::vector<int32_t> cluster_contents(size_t(highest_cluster + 1), 0);
+    for (const Q2Leaf& leaf : leaves)
+        if (leaf.cluster >= 0)
             cluster_contents[size_t(leaf.cluster)] |= leaf.contents;
     std::vector<int32_t> cluster_of_region;
     uint64_t solid = 0, without_cluster = 0; // leaves that are not regions
@@ -187,8 +191,7 @@ std::vector<int32_t> read_regions(const Q2& q, Zone& zone)
         zone.tree.leaf_region[i] = int32_t(zone.regions.size());
         Region region;
         region.flags = contents_flags(leaf.contents);
-        const int32_t contents = uint32_t(leaf.cluster) < cluster_contents.size() ? cluster_contents[size_t(leaf.cluster)]
-                                                                                 : leaf.contents; // unvised: no count
+        const int32_t contents = cluster_contents[size_t(leaf.cluster)];
         const int32_t visible = contents & kContentsVisible;
         const int32_t clear = contents & (kContentsTranslucent | kContentsDetail) ? 0 : visible;
         region.vis_contents = uint16_t(visible | clear << 8);

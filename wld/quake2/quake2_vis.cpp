@@ -66,4 +66,39 @@ Quake2VisResult vis_quake2_map(std::span<const uint8_t> map, const std::string& 
     return result;
 }
 
+Quake2ZonePvsResult write_quake2_zone_pvs(std::span<const uint8_t> map, const std::string& file, const Zone& zone,
+                                          const Pvs& pvs, PhsRule phs)
+{
+    const Ibsp38File parsed = read_ibsp38(map, file);
+    if (pvs.region_count() != zone.region_count())
+        throw std::invalid_argument("a PVS of " + std::to_string(pvs.region_count()) + " regions for a zone of " +
+                                    std::to_string(zone.region_count()));
+    if (zone.tree.leaf_region.size() != parsed.leaves.size())
+        throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "the map's leaves are not those of the zone given");
+    const uint32_t clusters = leaf_clusters(parsed);
+    std::vector<int32_t> cluster_of(zone.region_count(), -1);
+    for (size_t leaf = 0; leaf < parsed.leaves.size(); ++leaf)
+        if (const int32_t r = zone.tree.leaf_region[leaf]; r >= 0)
+            cluster_of[size_t(r)] = parsed.leaves[leaf].cluster;
+    const size_t words = bits::words_for(clusters);
+    std::vector<uint64_t> rows(size_t(clusters) * words, 0);
+    for (uint32_t c = 0; c < clusters; ++c)
+        bits::set(std::span<uint64_t>(rows.data() + c * words, words), c); // a cluster sees itself
+    std::vector<uint64_t> row(pvs.words_per_row());
+    for (uint32_t r = 0; r < zone.region_count(); ++r) {
+        if (cluster_of[r] < 0 || uint32_t(cluster_of[r]) >= clusters)
+            throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "region " + std::to_string(r) + " has no cluster");
+        pvs.decode_row(r, row);
+        const std::span<uint64_t> out(rows.data() + size_t(cluster_of[r]) * words, words);
+        bits::for_each_set(std::span<const uint64_t>(row), [&](size_t s) { bits::set(out, uint32_t(cluster_of[s])); });
+    }
+    const std::vector<uint64_t> hearable = compute_phs(rows, clusters, phs);
+    Quake2ZonePvsResult result;
+    result.map = with_visibility_lump(map, encode_visibility_lump(rows, hearable, clusters), file);
+    result.clusters = clusters;
+    result.mean_visible = mean_bits(rows, clusters);
+    result.mean_hearable = mean_bits(hearable, clusters);
+    return result;
+}
+
 } // namespace pvs::quake2

@@ -11,6 +11,7 @@
 
 #include "visibility/portal/portal_vis.h"
 #include "wld/quake/prt_file.h"
+#include "visibility/zone.h"
 #include "wld/quake2/phs.h"
 
 #include <cstdint>
@@ -39,5 +40,19 @@ struct Quake2VisResult {
 // `prt`: the portal file (unused with phs_only; its leaf count must be the map's cluster count).
 Quake2VisResult vis_quake2_map(std::span<const uint8_t> map, const std::string& file, const quake::PrtFile* prt,
                                const std::string& prt_file, const Quake2VisOptions& options);
+
+// A PVS over the map's zone (its leaves: ibsp38_zone.h), as `pvscope bake` makes it, written as
+// Quake 2 rows: a cluster's row holds every cluster that one of its leaves sees (the leaves'
+// rows ORed: what the engine reads per cluster), with the PHS made from them. `zone` is the map
+// loaded with load_ibsp38 (its leaves give the regions' clusters). Every other lump's bytes
+// unchanged. Throws FileError for a map it cannot read, std::invalid_argument for a PVS of
+// another size than the zone's.
+struct Quake2ZonePvsResult {
+    std::vector<uint8_t> map;
+    uint32_t clusters = 0;
+    double mean_visible = 0.0, mean_hearable = 0.0; // per cluster
+};
+Quake2ZonePvsResult write_quake2_zone_pvs(std::span<const uint8_t> map, const std::string& file, const Zone& zone,
+                                          const Pvs& pvs, PhsRule phs = PhsRule::Quake2);
 
 } // namespace pvs::quake2
