@@ -13,7 +13,7 @@ namespace pvs::app {
 std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
 {
     ui::OverlaySettings o;
-    o.zone_lines = o.locked_frustum = o.view_cell = false;
+    o.zone_lines = o.locked_frustum = o.view_cell = o.area_portals = false;
     if (text == "none")
         return o;
     std::stringstream list(text);
@@ -35,6 +35,8 @@ std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
             o.locked_frustum = true;
         else if (name == "cell")
             o.view_cell = true;
+        else if (name == "areaportals")
+            o.area_portals = true;
         else
             return std::nullopt;
     }
@@ -68,14 +70,14 @@ void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(c
     cmd->add_flag("--report-fps", o->report_fps,
                   "Draw --frames frames without vsync, print the frame times (mean, median, p95, fps) and exit");
     cmd->add_option("--overlays", o->overlays,
-                    "Overlays at start: a comma list of membership (tinted faces), membership-boxes, planes, portals, bounds, zonelines, frustum, cell; "
-                    "or none")
+                    "Overlays at start: a comma list of membership (tinted faces), membership-boxes, planes, portals, bounds, zonelines, frustum, cell, "
+                    "areaportals (Quake 2); or none")
         ->capture_default_str()
         ->check(CLI::Validator(
             [](std::string& text) {
                 return parse_overlays(text) ? std::string()
                                             : "expects a comma list of membership, membership-boxes, planes, portals, bounds, "
-                                              "zonelines, frustum (or none), got '" + text + "'";
+                                              "zonelines, frustum, cell, areaportals (or none), got '" + text + "'";
             },
             "LIST"));
     cmd->add_option("--hidden-lines", o->hidden_lines,

@@ -31,7 +31,7 @@ struct InspectArguments {
     std::string cull = "pvs+frustum";
     float far = 0.0f; // > 0: far clip and the culler's distance stage
     bool report_fps = false;
-    std::string overlays = "zonelines,frustum";
+    std::string overlays = "zonelines,frustum,areaportals";
     bool pick_centre = false;
     int bsp_node = -1;
     std::string bake;
@@ -44,7 +44,7 @@ struct InspectArguments {
 // Registers the subcommand; when it runs, `exit_code` receives run(arguments).
 void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(const InspectArguments&)> run);
 
-// "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell" (any subset, or
+// "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell,areaportals" (any subset, or
 // "none") -> the overlay toggles; nullopt for an unknown name.
 std::optional<ui::OverlaySettings> parse_overlays(const std::string& text);
 

@@ -82,6 +82,28 @@ void collect_portals(const OverlayScene& scene, LineBatch& outlines)
     }
 }
 
+// Quake 2 areaportals: each brush's box, green when open and red when closed, labelled.
+void paint_area_portals(Image& image, const OverlayScene& scene, const LineProjection& lines,
+                        std::vector<OverlayLabel>& labels)
+{
+    const std::vector<AreaPortal>& portals = scene.zone->area_portals;
+    for (size_t p = 0; p < portals.size(); ++p) {
+        const AreaPortal& portal = portals[p];
+        if (portal.bounds.empty())
+            continue;
+        const bool closed = p < scene.closed_area_portals.size() && scene.closed_area_portals[p];
+        const uint32_t colour = closed ? kClosedAreaPortalColor : kOpenAreaPortalColor;
+        draw_box_3d(image, lines, portal.bounds, colour);
+        if (const auto at = project_to_pixel(scene.view, image.width, image.height, portal.bounds.center()))
+            if (at->x >= 0.0f && at->y >= 0.0f && at->x < float(image.width) && at->y < float(image.height))
+                labels.push_back({*at,
+                                  "areaportal " + std::to_string(portal.number) + " (areas " +
+                                      std::to_string(portal.areas[0]) + "-" + std::to_string(portal.areas[1]) +
+                                      (closed ? ") closed" : ") open"),
+                                  colour});
+    }
+}
+
 void paint_zone_lines(Image& image, const OverlayScene& scene, const LineProjection& lines,
                       std::vector<OverlayLabel>& labels)
 {
@@ -229,6 +251,8 @@ void paint_overlays(Image& image, const OverlaySettings& settings, const Overlay
             draw_box_3d(image, lines, scene.zone->regions[r].bounds, kEditedPairColor);
     if (settings.zone_lines)
         paint_zone_lines(image, scene, lines, labels);
+    if (settings.area_portals)
+        paint_area_portals(image, scene, lines, labels);
     if (settings.view_cell && scene.zone->view_grid && scene.cull_cell >= 0)
         draw_box_3d(image, lines, scene.zone->view_grid->cell_bounds(uint32_t(scene.cull_cell)), kViewCellColor);
     if (settings.locked_frustum && scene.locked)
@@ -247,7 +271,8 @@ const char* hidden_lines_name(HiddenLines mode)
     return "?";
 }
 
-std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone, bool edited_pairs, bool pair)
+std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone, bool edited_pairs, bool pair,
+                                        bool area_portals)
 {
     std::vector<LegendEntry> legend;
     if (settings.split_planes) {
@@ -264,6 +289,10 @@ std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool gr
         legend.push_back({"portal of a drawn region", kPortalColor});
     if (settings.zone_lines)
         legend.push_back({"zone line (-> target)", kZoneLineColor});
+    if (settings.area_portals && area_portals) {
+        legend.push_back({"areaportal, open", kOpenAreaPortalColor});
+        legend.push_back({"areaportal, closed", kClosedAreaPortalColor});
+    }
     if (settings.locked_frustum)
         legend.push_back({"locked culling frustum", kLockedFrustumColor});
     if (settings.view_cell && grid_zone)

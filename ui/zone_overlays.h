@@ -50,6 +50,7 @@ struct OverlaySettings {
     bool portals = false;
     bool region_bounds = false;
     bool zone_lines = true;
+    bool area_portals = true; // Quake 2: areaportal brushes, open or closed, labelled
     bool locked_frustum = true;
     bool view_cell = true;
     bool pair_view = true; // the explained pair's sight line and portal chain (OverlayScene::pair)
@@ -74,6 +75,8 @@ inline constexpr uint32_t kSplitPlaneColor = 0x30C0FF;
 inline constexpr uint32_t kCurrentSplitPlaneColor = 0xFFE040;
 inline constexpr uint32_t kPortalColor = 0x00FFC0;
 inline constexpr uint32_t kZoneLineColor = 0xFF00FF; // as kFlagTints' zone line
+inline constexpr uint32_t kOpenAreaPortalColor = 0x40FF80;
+inline constexpr uint32_t kClosedAreaPortalColor = 0xFF4040;
 inline constexpr uint32_t kViewCellColor = 0x60A0FF;
 inline constexpr uint32_t kEditedPairColor = 0xFF60FF;
 inline constexpr uint32_t kSightLineColor = 0xFF8000;  // the explained pair's witness
@@ -116,6 +119,7 @@ struct OverlayScene {
     // kEditedPairColor so the edits show where they act.
     std::span<const uint32_t> edited_regions;
     const PairOverlay* pair = nullptr; // the explained pair (null: none)
+    std::span<const uint8_t> closed_area_portals; // per Zone::area_portals entry: 1 = closed
 };
 
 // A text label at a pixel of the picture (a zone line's target).
@@ -150,8 +154,9 @@ struct LegendEntry {
     uint32_t rgb;
 };
 // grid_zone: the zone has a view grid (its view cell overlay is then listed); edited_pairs: the
-// hand-edited pairs are boxed this frame; pair: an explained pair is drawn.
+// hand-edited pairs are boxed this frame; pair: an explained pair is drawn; area_portals: the
+// zone has Quake 2 areaportals.
 std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool grid_zone = false,
-                                        bool edited_pairs = false, bool pair = false);
+                                        bool edited_pairs = false, bool pair = false, bool area_portals = false);
 
 } // namespace pvs::ui

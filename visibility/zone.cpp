@@ -71,6 +71,7 @@ size_t Zone::memory_bytes() const
     total += heap_bytes(region_names);
     for (const std::string& name : region_names)
         total += heap_bytes(name);
+    total += heap_bytes(region_areas) + heap_bytes(area_portals);
     if (baked_pvs)
         total += baked_pvs->memory_bytes();
     if (portals)
@@ -95,6 +96,8 @@ void Zone::shrink_to_fit()
     region_faces.shrink_to_fit();
     zone_lines.shrink_to_fit();
     region_names.shrink_to_fit();
+    region_areas.shrink_to_fit();
+    area_portals.shrink_to_fit();
 }
 
 } // namespace pvs

@@ -159,6 +159,14 @@ struct ZoneSource {
     std::vector<std::string> notes;
 };
 
+// Quake 2: a func_areaportal, the door-closable link between two areas. Vis sees through it; the
+// engine draws nothing of an area that no open areaportal links to the camera's (area_flood.h).
+struct AreaPortal {
+    Aabb bounds;                // the areaportal brush
+    int32_t areas[2] = {-1, -1};
+    uint32_t number = 0;        // the portal number (the entity's "style")
+};
+
 struct Zone {
     ZoneSource source;
     std::vector<Region> regions;
@@ -178,6 +186,9 @@ struct Zone {
     // Grid zones only (OBJ + .hepvs, view_grid.h): the camera's cell comes from this grid, and
     // baked_pvs has one row per cell over the regions (the OBJ's objects). Absent for BSP zones.
     std::optional<ViewGrid> view_grid;
+    // Quake 2 only (empty elsewhere): each region's area, and the areaportals between areas.
+    std::vector<int32_t> region_areas;
+    std::vector<AreaPortal> area_portals;
 
     size_t region_count() const { return regions.size(); }
     std::span<const uint32_t> faces_of_region(uint32_t region) const

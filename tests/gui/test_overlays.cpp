@@ -2,6 +2,7 @@
 // coverage of a translucent polygon against the area its projection must cover (worked out by
 // hand from the camera), near-plane clipping, shared edges covered once, region membership
 // classes, the legend following the toggles, and the painter's overlays in the inspector.
+#include "tests/support/test_data.h"
 #include "ui/gui/inspector_state.h"
 #include "ui/overlay_fill.h"
 #include "ui/zone_overlays.h"
@@ -255,6 +256,42 @@ TEST_F(OverlayInspector, ZoneLineIsLabelledWithItsTarget)
     state.overlays.zone_lines = false;
     state.frame();
     EXPECT_TRUE(state.overlay_labels().empty());
+}
+
+} // namespace
+} // namespace pvs
+
+namespace pvs {
+namespace {
+
+// A Quake 2 map's doors: shutting the areaportal between the camera's area and the next drops
+// that area's regions from the frame (as the engine's areabits), and the overlay marks the door.
+TEST(Quake2AreaPortals, AShutDoorDropsTheAreaBehindItAndShowsRed)
+{
+    SHARED_DATA_OR_SKIP(path, "modern-quake/q2/q2_areaportals.ericw-vis.bsp");
+    gui::InspectorState state;
+    state.set_viewport_size(160, 120);
+    ASSERT_TRUE(state.open_zone(path));
+    const Zone& zone = state.zone();
+    ASSERT_EQ(state.closed_area_portals.size(), zone.area_portals.size());
+    state.cull_mode = CullMode::Pvs; // every region of the row, whatever the view
+    uint32_t in_area_1 = 0;
+    while (in_area_1 < zone.region_count() && zone.region_areas[in_area_1] != 1)
+        ++in_area_1;
+    ASSERT_LT(in_area_1, zone.region_count());
+    state.go_to_region(in_area_1);
+    const CullStats open = state.frame();
+    ASSERT_EQ(open.region, int32_t(in_area_1));
+    EXPECT_EQ(state.last_area_dropped(), 0u);
+    for (size_t p = 0; p < zone.area_portals.size(); ++p)
+        if (zone.area_portals[p].areas[0] == 1 || zone.area_portals[p].areas[1] == 1)
+            state.closed_area_portals[p] = 1;
+    const CullStats shut = state.frame();
+    EXPECT_GT(state.last_area_dropped(), 0u);
+    EXPECT_EQ(shut.regions_after_frustum + state.last_area_dropped(), open.regions_after_frustum);
+    const auto legend = ui::overlay_legend(state.overlays, false, false, false, true);
+    EXPECT_TRUE(std::any_of(legend.begin(), legend.end(),
+                            [](const ui::LegendEntry& e) { return e.rgb == ui::kClosedAreaPortalColor; }));
 }
 
 } // namespace

@@ -79,6 +79,25 @@ void draw_plots(const InspectorState& state, CullingPanel& panel)
                      {width, 60.0f});
 }
 
+// Quake 2 maps: a door per areaportal. Shutting one drops the areas it cuts off, as the engine does.
+void draw_area_portal_doors(InspectorState& state)
+{
+    if (!state.has_zone() || state.zone().area_portals.empty())
+        return;
+    const std::vector<AreaPortal>& portals = state.zone().area_portals;
+    state.closed_area_portals.resize(portals.size(), 0);
+    ImGui::TextDisabled("areaportals (Quake 2 doors): %zu regions dropped by shut ones", state.last_area_dropped());
+    for (size_t p = 0; p < portals.size(); ++p) {
+        bool shut = state.closed_area_portals[p] != 0;
+        const std::string label = "shut " + std::to_string(portals[p].number) + " (areas " +
+                                  std::to_string(portals[p].areas[0]) + "-" + std::to_string(portals[p].areas[1]) + ")";
+        if (p % 3 != 0)
+            ImGui::SameLine();
+        if (ImGui::Checkbox(label.c_str(), &shut))
+            state.closed_area_portals[p] = shut ? 1 : 0;
+    }
+}
+
 void draw_switches(InspectorState& state)
 {
     ImGui::TextDisabled("cull with");
@@ -91,6 +110,7 @@ void draw_switches(InspectorState& state)
     }
     ImGui::SetNextItemWidth(160.0f);
     ImGui::DragFloat("far clip (0: off)", &state.far_clip, 16.0f, 0.0f, 65536.0f, "%.0f");
+    draw_area_portal_doors(state);
     ImGui::TextDisabled("draw");
     first = true;
     for (const char* name : kRenderModeNames)

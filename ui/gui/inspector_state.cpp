@@ -1,6 +1,7 @@
 #include "ui/gui/inspector_state.h"
 
 #include "ui/gui/camera_math.h"
+#include "visibility/area_flood.h"
 #include "visibility/math/frustum.h"
 #include "visibility/region_lookup.h"
 #include "wld/gen/demo_zone.h"
@@ -154,6 +155,8 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     orbit_target_.reset();
     case_name_.clear();
     case_missing_.clear();
+    closed_area_portals.assign(zone_->area_portals.size(), 0); // every door open, as vis sees them
+    area_dropped_ = 0;
     pvs_source_ = zone_->baked_pvs ? PvsSource::File : PvsSource::None;
     rebuild_culler();
 
@@ -284,6 +287,13 @@ const CullStats& InspectorState::frame()
     CullOptions cull_options{cull_mode, true};
     cull_options.distance_stage = far_clip > 0.0f;
     last_cull_ = culler_->cull(cull_, cull_options, visible_);
+    area_dropped_ = 0;
+    if (!zone_->area_portals.empty() && last_cull_.region >= 0 && size_t(last_cull_.region) < zone_->region_areas.size()) {
+        const std::vector<uint8_t> reached =
+            areas_reached(*zone_, zone_->region_areas[size_t(last_cull_.region)], closed_area_portals);
+        area_dropped_ = keep_reached_areas(*zone_, reached, visible_);
+        last_cull_.regions_after_frustum -= uint32_t(area_dropped_);
+    }
     update_after_pvs();
     try {
         ensure_renderer();

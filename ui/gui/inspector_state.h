@@ -147,6 +147,11 @@ public:
     // > 0: the view camera's far plane and the culler's distance stage (CullOptions::
     // distance_stage), as an EverQuest client's far clip; 0: neither.
     float far_clip = 0.0f;
+    // Quake 2 maps: per Zone::area_portals entry, 1 = the door is shut. A frame then drops the
+    // regions of every area no open areaportal joins to the culling camera's (area_flood.h), as
+    // the engine does; last_area_dropped() says how many.
+    std::vector<uint8_t> closed_area_portals;
+    size_t last_area_dropped() const { return area_dropped_; }
     ui::RenderMode render_mode = ui::RenderMode::Textured;
 
     // The picture's size in pixels (1 .. 8192 each, clamped); the view camera's aspect follows.
@@ -343,6 +348,7 @@ private:
     std::optional<glm::vec3> orbit_target_;
 
     std::vector<uint32_t> after_pvs_;
+    size_t area_dropped_ = 0;
     std::vector<uint32_t> picture_regions_, region_tints_; // the membership tint's frame lists
     std::vector<ui::OverlayLabel> labels_;
     ui::OverlayLines overlay_lines_; // paint_line_layer's working memory

@@ -137,6 +137,7 @@ ui::OverlayScene InspectorState::overlay_scene()
     update_edited_pairs();
     scene.edited_regions = edited_pairs_;
     scene.pair = explanation_ ? &pair_overlay_ : nullptr;
+    scene.closed_area_portals = closed_area_portals;
     return scene;
 }
 

@@ -232,6 +232,8 @@ void draw_region_panel(InspectorState& state, RegionPanel& panel)
                 double(info.bounds.min.z), double(info.bounds.max.x), double(info.bounds.max.y),
                 double(info.bounds.max.z));
     ImGui::Text("flags: %s", flag_names(info.flags).c_str());
+    if (size_t(region) < zone.region_names.size()) // an OBJ's object, a Quake 2 leaf's cluster and area
+        ImGui::Text("%s", zone.region_names[size_t(region)].c_str());
     if (info.zone_line >= 0 && size_t(info.zone_line) < zone.zone_lines.size())
         ImGui::Text("zone line to %s", zone.zone_lines[size_t(info.zone_line)].target.c_str());
     ImGui::Text("%zu faces, %llu triangles", zone.faces_of_region(uint32_t(region)).size(),

@@ -62,6 +62,7 @@ void draw_overlay_menu(InspectorState& state)
         ImGui::MenuItem("Portals", nullptr, &o.portals);
         ImGui::MenuItem("Region bounds", nullptr, &o.region_bounds);
         ImGui::MenuItem("Zone lines", nullptr, &o.zone_lines);
+        ImGui::MenuItem("Areaportals (Quake 2)", nullptr, &o.area_portals);
         ImGui::MenuItem("Locked culling frustum", nullptr, &o.locked_frustum);
         ImGui::MenuItem("View cell (OBJ + .hepvs zones)", nullptr, &o.view_cell);
         ImGui::Separator();
@@ -88,7 +89,7 @@ void draw_legend(const InspectorState& state, ImVec2 origin, ImVec2 size)
                        state.pvs_editor()->edit_count() > 0;
     const std::vector<ui::LegendEntry> legend =
         ui::overlay_legend(state.overlays, state.has_zone() && state.zone().view_grid.has_value(), edits,
-                           state.explanation().has_value());
+                           state.explanation().has_value(), state.has_zone() && !state.zone().area_portals.empty());
     const float line = ImGui::GetTextLineHeight() + 2.0f, swatch = ImGui::GetTextLineHeight() - 2.0f;
     float width = ImGui::CalcTextSize("no overlays (Overlays menu)").x;
     for (const ui::LegendEntry& e : legend)

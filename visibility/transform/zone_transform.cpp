@@ -80,6 +80,8 @@ Zone transform_zone(const Zone& zone, const ZoneTransform& t)
         r.bounds = move_box(t, r.bounds);
     for (ZoneLine& line : out.zone_lines)
         line.bounds = move_box(t, line.bounds);
+    for (AreaPortal& portal : out.area_portals)
+        portal.bounds = move_box(t, portal.bounds);
     for (size_t i = 0; i < out.mesh.positions.size(); ++i)
         out.mesh.positions[i] = move_point(t, out.mesh.positions[i], 2, i);
     if (t.kind == ZoneTransform::Kind::Mirror) // keep counter-clockwise from the front

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace pvs::quake2 {
@@ -29,7 +30,7 @@ constexpr const char* kLumpNames[kIbsp38LumpCount] = {
 // Contents and surface flags (Quake 2's q_shared.h).
 constexpr int32_t kContentsSolid = 1, kContentsLava = 8, kContentsSlime = 16, kContentsWater = 32;
 constexpr int32_t kContentsVisible = 0x7E; // window, aux, lava, slime, water, mist: what vis compares
-constexpr int32_t kContentsDetail = 0x8000000, kContentsTranslucent = 0x10000000;
+constexpr int32_t kContentsDetail = 0x8000000, kContentsTranslucent = 0x10000000, kContentsAreaPortal = 0x8000;
 constexpr int32_t kSurfSky = 0x4, kSurfWarp = 0x8, kSurfTrans33 = 0x10, kSurfTrans66 = 0x20, kSurfNodraw = 0x80;
 constexpr uint32_t kMaxFaceEdges = 1024; // qbsp3's limit is 64; this only bounds bad files
 constexpr float kNominalTextureSize = 64.0f;
@@ -203,6 +204,9 @@ std::vector<int32_t> read_regions(const Q2& q, Zone& zone)
         }
         zone.regions.push_back(region);
         cluster_of_region.push_back(leaf.cluster);
+        zone.region_areas.push_back(leaf.area);
+        zone.region_names.push_back("leaf " + std::to_string(i) + ", cluster " + std::to_string(leaf.cluster) +
+                                    ", area " + std::to_string(leaf.area));
     }
     zone.source.counts.emplace_back("leaves", leaves.size());
     zone.source.counts.emplace_back("leaves.solid", solid);
@@ -373,10 +377,60 @@ void read_visibility(const Q2& q, const std::vector<int32_t>& cluster_of_region,
     });
 }
 
+// Areas and areaportals: per area its list of (portal number, other area); the portal's brush is
+// the leaves of CONTENTS_AREAPORTAL that qbsp left of it, each given to the portal whose two
+// areas are those of the open leaves around it.
 void read_areas(const Q2& q, Zone& zone)
 {
-    zone.source.counts.emplace_back("areas", q.count(kQ2LumpAreas, kAreaBytes));
-    zone.source.counts.emplace_back("areaportals", q.count(kQ2LumpAreaPortals, kAreaPortalBytes));
+    const uint32_t areas = q.count(kQ2LumpAreas, kAreaBytes), links = q.count(kQ2LumpAreaPortals, kAreaPortalBytes);
+    zone.source.counts.emplace_back("areas", areas);
+    zone.source.counts.emplace_back("areaportals", links);
+    std::map<uint32_t, size_t> portal_of_number;
+    for (uint32_t a = 0; a < areas; ++a) {
+        const uint64_t at = q.record(kQ2LumpAreas, kAreaBytes, a);
+        const int32_t count = q.in.read<int32_t>(at, "area numareaportals");
+        const int32_t first = q.in.read<int32_t>(at + 4, "area firstareaportal");
+        if (count < 0 || first < 0 || int64_t{first} + count > int64_t{links})
+            q.in.fail(at, "area " + std::to_string(a) + "'s areaportal range is outside the areaportals lump");
+        for (int32_t k = 0; k < count; ++k) {
+            const uint64_t link_at = q.record(kQ2LumpAreaPortals, kAreaPortalBytes, uint32_t(first + k));
+            const int32_t number = q.in.read<int32_t>(link_at, "areaportal portalnum");
+            const int32_t other = q.in.read<int32_t>(link_at + 4, "areaportal otherarea");
+            if (number < 0 || other < 0 || uint32_t(other) >= areas)
+                q.in.fail(link_at, "areaportal " + std::to_string(number) + " links to area " + std::to_string(other) +
+                                       " of " + std::to_string(areas));
+            const auto [it, fresh] = portal_of_number.try_emplace(uint32_t(number), zone.area_portals.size());
+            if (fresh) {
+                AreaPortal portal;
+                portal.number = uint32_t(number);
+                portal.areas[0] = int32_t(std::min<uint32_t>(a, uint32_t(other)));
+                portal.areas[1] = int32_t(std::max<uint32_t>(a, uint32_t(other)));
+                zone.area_portals.push_back(portal);
+            }
+        }
+    }
+    std::vector<int32_t> touching;
+    for (size_t i = 0; i < q.file.leaves.size(); ++i) {
+        if (!(q.file.leaves[i].contents & kContentsAreaPortal))
+            continue;
+        Aabb box;
+        const uint64_t at = q.record(kQ2LumpLeafs, kQ2LeafBytes, uint32_t(i));
+        for (uint64_t corner : {at + 8, at + 14}) {
+            glm::vec3 p;
+            for (int k = 0; k < 3; ++k)
+                p[k] = float(q.in.read<int16_t>(corner + 2 * uint64_t(k), "leaf bounds"));
+            box.grow(p);
+        }
+        touching.clear();
+        quake::leaves_touching_box(zone.tree, Aabb{box.min - 1.0f, box.max + 1.0f}, touching);
+        std::set<int32_t> around;
+        for (int32_t leaf : touching)
+            if (size_t(leaf) < q.file.leaves.size() && !(q.file.leaves[size_t(leaf)].contents & (kContentsSolid | kContentsAreaPortal)))
+                around.insert(q.file.leaves[size_t(leaf)].area);
+        for (AreaPortal& portal : zone.area_portals)
+            if (around.count(portal.areas[0]) && around.count(portal.areas[1]))
+                portal.bounds.grow(box);
+    }
 }
 
 void read_entities(const Q2& q, Zone& zone)
