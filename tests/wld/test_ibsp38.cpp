@@ -10,13 +10,10 @@
 #include "wld/quake2/ibsp38_file.h"
 #include "wld/quake2/phs.h"
 
-#include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <fstream>
-
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -192,39 +189,6 @@ TEST(Ibsp38BadInput, TruncationsAndFlipsFailCleanly)
         }
         flipped[i] = good[i];
     }
-}
-
-} // namespace
-} // namespace pvs::quake2
-
-namespace pvs::quake2 {
-namespace {
-
-// Opening a Quake 2 map as a zone (info, bake, the inspector) names it for what it is, not as a
-// Quake 3 file; a Quake 3 header is named too.
-TEST(Ibsp38AsZone, TheLoaderNamesQuake2AndQuake3Maps)
-{
-    SHARED_DATA_OR_SKIP(path, "modern-quake/q2/q2_liquids.bsp");
-    try {
-        load_zone(path);
-        FAIL() << "a Quake 2 map opened as a zone";
-    } catch (const FileError& e) {
-        EXPECT_NE(std::string(e.what()).find("a Quake 2 map (IBSP 38)"), std::string::npos) << e.what();
-        EXPECT_EQ(std::string(e.what()).find("Quake 3"), std::string::npos) << e.what();
-    }
-    const std::string q3 = ::testing::TempDir() + "q3.bsp";
-    {
-        std::ofstream out(q3, std::ios::binary);
-        const char header[8] = {'I', 'B', 'S', 'P', 46, 0, 0, 0};
-        out.write(header, 8);
-    }
-    try {
-        load_zone(q3);
-        FAIL() << "a Quake 3 map opened as a zone";
-    } catch (const FileError& e) {
-        EXPECT_NE(std::string(e.what()).find("Quake 3 map (IBSP 46)"), std::string::npos) << e.what();
-    }
-    std::remove(q3.c_str());
 }
 
 } // namespace
