@@ -14,6 +14,8 @@
 //  - Region bounds: the bounds box of every drawn region in its region_color.
 //  - Zone lines: each zone line's trigger box (its region's bounds when the file gives none) and
 //    a label with its target, returned as text for the UI to draw (an Image has no font).
+//  - Areaportals (Quake 2): each areaportal's brush box, open or closed (OverlayScene::
+//    closed_area_portals), labelled with its number and areas.
 //  - Locked frustum: the culling camera's view volume while it is locked (kLockedFrustumColor).
 //  - View cell (grid zones: OBJ + .hepvs): the culling camera's grid cell, whose PVS row culls
 //    (kViewCellColor); with PVS membership on, its objects are the drawn and frustum-culled boxes.
