@@ -16,12 +16,15 @@
 #include "visibility/region_lookup.h"
 #include "wld/quake/prt_file.h"
 #include "wld/quake2/ibsp38_zone.h"
+#include "wld/quake2/quake2_vis.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 namespace pvs {
@@ -199,6 +202,42 @@ TEST(Quake2ZoneRules, UnvisedMapLoadsWithoutAPvsAndNamesItsSurfaces)
     for (uint32_t r = 0; r < zone.region_count(); ++r)
         for (uint32_t f : zone.faces_of_region(r))
             ASSERT_LT(f, zone.mesh.faces.size());
+}
+
+TEST(Quake2ZoneRules, WritingRowsChecksTheZoneAgainstTheMap)
+{
+    SHARED_DATA_OR_SKIP(path, "modern-quake/q2/q2_liquids.bsp");
+    SHARED_DATA_OR_SKIP(other_path, "modern-quake/q2/q2_areaportals.bsp");
+    const std::vector<uint8_t> bytes = test::read_bytes(path);
+    Zone zone = load_zone(path);
+    const auto all_visible = [](uint32_t regions) {
+        return Pvs::build(regions, [](uint32_t, std::span<uint64_t> row) {
+            std::fill(row.begin(), row.end(), ~uint64_t{0});
+            return true;
+        });
+    };
+    const quake2::Quake2ZonePvsResult written =
+        quake2::write_quake2_zone_pvs(bytes, path, zone, all_visible(uint32_t(zone.region_count())));
+    EXPECT_EQ(written.clusters, 18u);
+    EXPECT_DOUBLE_EQ(written.mean_visible, 18.0);
+    EXPECT_THROW(quake2::write_quake2_zone_pvs(bytes, path, zone, all_visible(3)), std::invalid_argument);
+    const Zone other = load_zone(other_path);
+    EXPECT_THROW(quake2::write_quake2_zone_pvs(bytes, path, other, all_visible(uint32_t(other.region_count()))),
+                 FileError);
+    // A region moved onto a leaf without a cluster (a solid one): refused, naming the region.
+    size_t solid_leaf = 0;
+    while (zone.tree.leaf_region[solid_leaf] != kLeafSolid)
+        ++solid_leaf;
+    for (int32_t& region : zone.tree.leaf_region)
+        if (region == 0)
+            region = kLeafSolid;
+    zone.tree.leaf_region[solid_leaf] = 0;
+    try {
+        quake2::write_quake2_zone_pvs(bytes, path, zone, all_visible(uint32_t(zone.region_count())));
+        FAIL() << "a region without a cluster was written";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("region 0 has no cluster"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Quake2ZoneRules, Quake3MapsAreNamedNotOpened)

@@ -78,19 +78,23 @@ Quake2ZonePvsResult write_quake2_zone_pvs(std::span<const uint8_t> map, const st
     const uint32_t clusters = leaf_clusters(parsed);
     std::vector<int32_t> cluster_of(zone.region_count(), -1);
     for (size_t leaf = 0; leaf < parsed.leaves.size(); ++leaf)
-        if (const int32_t r = zone.tree.leaf_region[leaf]; r >= 0)
+        if (const int32_t r = zone.tree.leaf_region[leaf]; r >= 0 && size_t(r) < cluster_of.size())
             cluster_of[size_t(r)] = parsed.leaves[leaf].cluster;
+    for (uint32_t r = 0; r < zone.region_count(); ++r) // every region's cluster, before any row uses it
+        if (cluster_of[r] < 0 || uint32_t(cluster_of[r]) >= clusters)
+            throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "region " + std::to_string(r) + " has no cluster");
     const size_t words = bits::words_for(clusters);
     std::vector<uint64_t> rows(size_t(clusters) * words, 0);
     for (uint32_t c = 0; c < clusters; ++c)
         bits::set(std::span<uint64_t>(rows.data() + c * words, words), c); // a cluster sees itself
     std::vector<uint64_t> row(pvs.words_per_row());
     for (uint32_t r = 0; r < zone.region_count(); ++r) {
-        if (cluster_of[r] < 0 || uint32_t(cluster_of[r]) >= clusters)
-            throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "region " + std::to_string(r) + " has no cluster");
         pvs.decode_row(r, row);
         const std::span<uint64_t> out(rows.data() + size_t(cluster_of[r]) * words, words);
-        bits::for_each_set(std::span<const uint64_t>(row), [&](size_t s) { bits::set(out, uint32_t(cluster_of[s])); });
+        bits::for_each_set(std::span<const uint64_t>(row), [&](size_t s) {
+            if (s < cluster_of.size()) // a row's padding bits past the last region name nothing
+                bits::set(out, uint32_t(cluster_of[s]));
+        });
     }
     const std::vector<uint64_t> hearable = compute_phs(rows, clusters, phs);
     Quake2ZonePvsResult result;
