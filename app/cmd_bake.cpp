@@ -204,7 +204,7 @@ Input load_input(const BakeOptions& o)
 // A Doom map keeps its sectors (its writer needs them; they are small).
 void drop_what_a_portal_bake_does_not_read(Input& in)
 {
-    if (in.format != InputFormat::QuakeBsp && in.format != InputFormat::EqS3d)
+    if (in.format != InputFormat::QuakeBsp && in.format != InputFormat::Quake2Bsp && in.format != InputFormat::EqS3d)
         return;
     in.zone.mesh = Mesh{};
     for (Material& material : in.zone.materials)

@@ -2,12 +2,17 @@
 
 namespace pvs::ui {
 
-Image new_layer(uint32_t width, uint32_t height)
+void clear_layer(Image& layer, uint32_t width, uint32_t height)
 {
-    Image layer;
     layer.width = width;
     layer.height = height;
     layer.rgba.assign(size_t(width) * height * 4, 0);
+}
+
+Image new_layer(uint32_t width, uint32_t height)
+{
+    Image layer;
+    clear_layer(layer, width, height);
     return layer;
 }
 

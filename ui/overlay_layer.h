@@ -17,8 +17,10 @@
 
 namespace pvs::ui {
 
-// A width x height layer, every pixel transparent (alpha 0).
+// A width x height layer, every pixel transparent (alpha 0); clear_layer makes `layer` one again,
+// keeping its memory (a layer a frame).
 Image new_layer(uint32_t width, uint32_t height);
+void clear_layer(Image& layer, uint32_t width, uint32_t height);
 
 // `rgb` (0xRRGGBB) at `alpha` (0 .. 255) over the pixel p (4 bytes RGBA): onto an opaque pixel
 // (a picture's) the line blend (rgb * alpha + p * (255 - alpha)) / 255, rounded; onto a

@@ -12,11 +12,6 @@ namespace pvs::ui {
 
 namespace {
 
-bool contains(std::span<const uint32_t> ascending, uint32_t value)
-{
-    return std::binary_search(ascending.begin(), ascending.end(), value);
-}
-
 void paint_split_planes(Image& image, const OverlayScene& scene, const LineProjection& lines)
 {
     if (!scene.node_polygons || scene.path_nodes.empty())
@@ -39,21 +34,20 @@ void paint_split_planes(Image& image, const OverlayScene& scene, const LineProje
 // The boxes of the regions the picture's own frustum can show (an outdoor zone has tens of
 // thousands; drawing every one cost 40 ms a frame), culled first so the drawn and current boxes
 // end on top where edges meet.
-void collect_membership_boxes(const OverlayScene& scene, LineBatch& edges)
+void collect_membership_boxes(const OverlayScene& scene, OverlayLines& lines)
 {
     const Zone& zone = *scene.zone;
     const Frustum view = Frustum::from_view_projection(scene.view.view_projection());
-    static thread_local std::vector<uint32_t> by_class[4], tints;
-    for (std::vector<uint32_t>& list : by_class)
+    for (std::vector<uint32_t>& list : lines.by_class)
         list.clear();
-    membership_tints(zone, scene.cull_region, scene.visible, scene.after_pvs, tints);
+    membership_tints(zone, scene.cull_region, scene.visible, scene.after_pvs, lines.tints);
     for (uint32_t r = 0; r < zone.region_count(); ++r)
         if (view.intersects(zone.regions[r].bounds))
-            by_class[tints[r] - kMembershipTintBase].push_back(r);
+            lines.by_class[lines.tints[r] - kMembershipTintBase].push_back(r);
     for (Membership pass : {Membership::CulledByPvs, Membership::CulledByFrustum, Membership::Drawn,
                             Membership::Current})
-        for (uint32_t r : by_class[size_t(pass)])
-            edges.add_box(zone.regions[r].bounds, membership_color(pass));
+        for (uint32_t r : lines.by_class[size_t(pass)])
+            lines.membership_boxes.add_box(zone.regions[r].bounds, membership_color(pass));
 }
 
 void collect_region_bounds(const OverlayScene& scene, LineBatch& edges)
@@ -64,21 +58,21 @@ void collect_region_bounds(const OverlayScene& scene, LineBatch& edges)
 }
 
 // The outlines of the portals with a drawn region on either side.
-void collect_portals(const OverlayScene& scene, LineBatch& outlines)
+void collect_portals(const OverlayScene& scene, OverlayLines& lines)
 {
     if (!scene.portals)
         return;
-    static thread_local std::vector<bool> drawn;
-    drawn.assign(scene.zone->region_count(), false);
+    std::vector<uint8_t>& drawn = lines.drawn;
+    drawn.assign(scene.zone->region_count(), 0);
     for (uint32_t r : scene.visible)
         if (r < drawn.size())
-            drawn[r] = true;
+            drawn[r] = 1;
     const auto is_drawn = [&](int32_t r) { return r >= 0 && size_t(r) < drawn.size() && drawn[size_t(r)]; };
     const PortalSet& set = *scene.portals;
     for (const Portal& p : set.portals) {
         if (!(is_drawn(p.regions[0]) || is_drawn(p.regions[1])) || size_t(p.first_point) + p.point_count > set.points.size())
             continue;
-        outlines.add_outline(std::span(set.points).subspan(p.first_point, p.point_count), kPortalColor);
+        lines.portals.add_outline(std::span(set.points).subspan(p.first_point, p.point_count), kPortalColor);
     }
 }
 
@@ -159,21 +153,10 @@ void paint_pair(Image& image, const OverlayScene& scene, const LineProjection& l
 
 } // namespace
 
-Membership classify_region(uint32_t region, int32_t current, std::span<const uint32_t> visible,
-                           std::span<const uint32_t> after_pvs)
-{
-    if (int32_t(region) == current)
-        return Membership::Current;
-    if (contains(visible, region))
-        return Membership::Drawn;
-    return contains(after_pvs, region) ? Membership::CulledByFrustum : Membership::CulledByPvs;
-}
-
 void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
                       std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out)
 {
-    // classify_region's answers, a list at a time (a binary search per region cost milliseconds
-    // a frame on an outdoor zone).
+    // A list at a time (a binary search per region cost milliseconds a frame on an outdoor zone).
     out.assign(zone.region_count(), kMembershipTintBase + uint32_t(Membership::CulledByPvs));
     const auto mark = [&](std::span<const uint32_t> regions, Membership membership) {
         for (uint32_t r : regions)
@@ -217,11 +200,11 @@ uint32_t paint_line_overlays(Image& image, const OverlaySettings& settings, cons
     if (!scene.zone || image.rgba.empty())
         return 0;
     if (settings.pvs_membership_boxes)
-        collect_membership_boxes(scene, lines.membership_boxes);
+        collect_membership_boxes(scene, lines);
     if (settings.region_bounds)
         collect_region_bounds(scene, lines.region_bounds);
     if (settings.portals)
-        collect_portals(scene, lines.portals);
+        collect_portals(scene, lines);
     LineProjection view(scene.view);
     view.occlusion = scene.occlusion;
     view.hidden_lines = settings.hidden_lines;

@@ -1,6 +1,6 @@
 // The inspector's overlays, drawn over a rendered picture on the CPU (ui/overlay_fill.h,
 // ui/overlay_lines.h), each behind its own toggle, and the legend that names their colours:
-//  - PVS membership: the class of each region this frame (classify_region: the culling camera's
+//  - PVS membership: the class of each region this frame (membership_tints: the culling camera's
 //    region, drawn, culled by the frustum — in the PVS but outside the view volume —, culled by
 //    the PVS) as a tint of its faces: the caller renders every region with membership_tints
 //    (depth-correct: a PVS-culled wall shows red only where it is really in sight). With
@@ -63,10 +63,6 @@ const char* hidden_lines_name(HiddenLines mode); // shown, faint, hidden
 
 // A region's part in this frame's culling.
 enum class Membership : uint8_t { Current, Drawn, CulledByFrustum, CulledByPvs };
-// `visible` and `after_pvs` ascending (after_pvs: what the PVS stage kept, every region when it
-// did not run); `current` the culling camera's region or -1.
-Membership classify_region(uint32_t region, int32_t current, std::span<const uint32_t> visible,
-                           std::span<const uint32_t> after_pvs);
 
 // Colours (0xRRGGBB) and fill weights (out of 256).
 inline constexpr uint32_t kCurrentRegionColor = kMembershipTints[0]; // the same colours tint the faces
@@ -88,7 +84,10 @@ inline constexpr uint32_t kSplitPlaneAlpha = 24; // a dozen planes overlap: keep
 inline constexpr uint32_t kCurrentSplitPlaneAlpha = 90;
 
 uint32_t membership_color(Membership membership);
-// One tint palette index (kMembershipTintBase + class) per region of `zone`, into `out`.
+// One tint palette index (kMembershipTintBase + Membership) per region of `zone`, into `out`:
+// `current` (the culling camera's region, or -1) Current; the regions of `visible` Drawn; the
+// others of `after_pvs` (what the PVS stage kept, every region when it did not run)
+// CulledByFrustum; the rest CulledByPvs.
 void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
                       std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out);
 const char* membership_name(Membership membership);
@@ -139,6 +138,8 @@ struct OverlayLabel {
 // memory, reused across frames. Returns the pixels set.
 struct OverlayLines {
     LineBatch membership_boxes, region_bounds, portals;
+    std::vector<uint32_t> tints, by_class[4]; // the membership boxes' classes
+    std::vector<uint8_t> drawn;               // per region, for the portals
 };
 uint32_t paint_line_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,
                              OverlayLines& lines);

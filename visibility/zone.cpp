@@ -36,6 +36,23 @@ std::vector<uint8_t> material_rgba(const Material& material)
     return rgba;
 }
 
+int32_t node_reached_twice(const BspTree& tree)
+{
+    std::vector<uint8_t> seen(tree.nodes.size(), 0);
+    std::vector<int32_t> stack{tree.root};
+    while (!stack.empty()) {
+        const int32_t child = stack.back();
+        stack.pop_back();
+        if (BspTree::is_leaf(child))
+            continue;
+        if (seen[size_t(child)]++)
+            return child;
+        stack.push_back(tree.nodes[size_t(child)].children[0]);
+        stack.push_back(tree.nodes[size_t(child)].children[1]);
+    }
+    return -1;
+}
+
 Aabb Zone::bounds() const
 {
     Aabb box;

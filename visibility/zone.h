@@ -99,6 +99,11 @@ struct BspTree {
     static constexpr int32_t leaf_index(int32_t child) { return ~child; }
 };
 
+// The first node a walk down from the root reaches a second time (a cycle, or a subtree two
+// parents share), or -1 when each is reached at most once. Loaders refuse such trees, so every
+// walk of a loaded tree ends. Children must be in range (loaders check them first).
+int32_t node_reached_twice(const BspTree& tree);
+
 // Material flags.
 enum MaterialFlag : uint32_t {
     kMaterialSky = 1u << 0,

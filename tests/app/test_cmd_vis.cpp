@@ -190,6 +190,19 @@ TEST_F(VisCommand, Bsp2StaysBsp2)
 // Quake 2: the unvised maps vised from their .prt beside them get ericw's cluster counts and a PVS
 // the same as ericw vis's on the two maps without t-junction noise; the PHS is Quake 2's rule of
 // that PVS (recomputed here); every lump but the visibility lump is byte for byte the input's.
+// Every lump of a Quake 2 map but the visibility lump has the same bytes after as before.
+void expect_other_lumps_kept(const std::vector<uint8_t>& before, const quake2::Ibsp38File& in,
+                             const std::vector<uint8_t>& after, const quake2::Ibsp38File& out, const char* name)
+{
+    for (int lump = 0; lump < quake2::kIbsp38LumpCount; ++lump) {
+        if (lump == quake2::kQ2LumpVisibility)
+            continue;
+        const auto a = std::span(before).subspan(in.lumps[lump].offset, in.lumps[lump].length);
+        const auto b = std::span(after).subspan(out.lumps[lump].offset, out.lumps[lump].length);
+        EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << name << " lump " << lump;
+    }
+}
+
 TEST_F(VisCommand, Quake2MapsGetPvsAndPhsOverClusters)
 {
     SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_liquids.bsp");
@@ -208,13 +221,7 @@ TEST_F(VisCommand, Quake2MapsGetPvsAndPhsOverClusters)
         if (std::string(name) != "q2_tjunc_matrix") {
             EXPECT_EQ(out.pvs_rows, ericw.pvs_rows) << name;
         }
-        for (int lump = 0; lump < quake2::kIbsp38LumpCount; ++lump) {
-            if (lump == quake2::kQ2LumpVisibility)
-                continue;
-            const auto a = std::span(before).subspan(in.lumps[lump].offset, in.lumps[lump].length);
-            const auto b = std::span(after).subspan(out.lumps[lump].offset, out.lumps[lump].length);
-            EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << name << " lump " << lump;
-        }
+        expect_other_lumps_kept(before, in, after, out, name);
     }
 }
 
@@ -249,13 +256,7 @@ TEST_F(VisCommand, Quake2BakeFromTheTreeWithinEricwsRows)
             EXPECT_EQ(out.pvs_rows, ericw.pvs_rows) << name;
         }
         EXPECT_EQ(out.phs_rows, quake2::compute_phs(out.pvs_rows, out.clusters, quake2::PhsRule::Quake2)) << name;
-        for (int lump = 0; lump < quake2::kIbsp38LumpCount; ++lump) {
-            if (lump == quake2::kQ2LumpVisibility)
-                continue;
-            const auto a = std::span(before).subspan(in.lumps[lump].offset, in.lumps[lump].length);
-            const auto b = std::span(after).subspan(out.lumps[lump].offset, out.lumps[lump].length);
-            EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << name << " lump " << lump;
-        }
+        expect_other_lumps_kept(before, in, after, out, name);
     }
 }
 

@@ -142,12 +142,17 @@ TEST(OverlayFill, PrecomputedMatricesDrawTheSamePixels)
 
 TEST(ZoneOverlays, MembershipClasses)
 {
+    Zone zone;
+    zone.regions.resize(5);
     const std::vector<uint32_t> visible{1, 4}, after_pvs{1, 2, 4};
-    EXPECT_EQ(ui::classify_region(1, 1, visible, after_pvs), ui::Membership::Current);
-    EXPECT_EQ(ui::classify_region(4, 1, visible, after_pvs), ui::Membership::Drawn);
-    EXPECT_EQ(ui::classify_region(2, 1, visible, after_pvs), ui::Membership::CulledByFrustum);
-    EXPECT_EQ(ui::classify_region(3, 1, visible, after_pvs), ui::Membership::CulledByPvs);
-    EXPECT_EQ(ui::classify_region(3, -1, visible, after_pvs), ui::Membership::CulledByPvs);
+    const auto tint = [](ui::Membership m) { return ui::kMembershipTintBase + uint32_t(m); };
+    std::vector<uint32_t> tints;
+    ui::membership_tints(zone, 1, visible, after_pvs, tints);
+    EXPECT_EQ(tints, (std::vector<uint32_t>{tint(ui::Membership::CulledByPvs), tint(ui::Membership::Current),
+                                            tint(ui::Membership::CulledByFrustum), tint(ui::Membership::CulledByPvs),
+                                            tint(ui::Membership::Drawn)}));
+    ui::membership_tints(zone, -1, visible, after_pvs, tints); // no camera region: 1 is drawn
+    EXPECT_EQ(tints[1], tint(ui::Membership::Drawn));
 }
 
 TEST(ZoneOverlays, LegendFollowsTheToggles)

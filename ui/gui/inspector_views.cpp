@@ -145,7 +145,7 @@ void InspectorState::paint_line_layer(ui::OverlayScene& scene)
 {
     if (overlays.hidden_lines != ui::HiddenLines::Shown)
         scene.occlusion = picture_occlusion(); // depends on the regions drawn, not on the pixels
-    line_layer_ = ui::new_layer(width_, height_);
+    ui::clear_layer(line_layer_, width_, height_);
     ui::paint_line_overlays(line_layer_, overlays, scene, overlay_lines_);
 }
 

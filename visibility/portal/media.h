@@ -66,12 +66,20 @@ constexpr bool quake2_sight(uint16_t a, uint16_t b)
     return (a & 0xFF) == (b & 0xFF) || (a >> 8) == (b >> 8);
 }
 
-// Whether sight may pass from region `a` straight into its neighbour `b` (not the same region).
+// Whether sight may pass from a region of medium `a` and vis contents `contents_a` (Region::
+// vis_contents) straight into a neighbour of `b`, `contents_b`: Quake 2's rule when both carry
+// contents, the flags' otherwise.
+constexpr bool sees_through(Medium a, uint16_t contents_a, Medium b, uint16_t contents_b, SkyPortals sky)
+{
+    if (contents_a != kNoVisContents && contents_b != kNoVisContents)
+        return quake2_sight(contents_a, contents_b);
+    return sees_through(a, b, sky);
+}
+
+// The same for two regions (not the same region).
 constexpr bool regions_see_through(const Region& a, const Region& b, SkyPortals sky)
 {
-    if (a.vis_contents != kNoVisContents && b.vis_contents != kNoVisContents)
-        return quake2_sight(a.vis_contents, b.vis_contents);
-    return sees_through(medium_of(a.flags), medium_of(b.flags), sky);
+    return sees_through(medium_of(a.flags), a.vis_contents, medium_of(b.flags), b.vis_contents, sky);
 }
 
 } // namespace pvs

@@ -89,9 +89,7 @@ public:
             return true;
         const RegionMedium& a = medium_[size_t(from)];
         const RegionMedium& b = medium_[size_t(to)];
-        if (a.vis_contents != kNoVisContents && b.vis_contents != kNoVisContents)
-            return quake2_sight(a.vis_contents, b.vis_contents);
-        return sees_through(Medium(a.medium), Medium(b.medium), sky_);
+        return sees_through(Medium(a.medium), a.vis_contents, Medium(b.medium), b.vis_contents, sky_);
     }
 
 private:

@@ -134,19 +134,9 @@ void read_tree(const Bsp& bsp, const Model& world, Zone& zone)
     }
 
     // The walk must end: every node reachable from the root is reached exactly once.
-    std::vector<uint8_t> seen(tree.nodes.size(), 0);
-    std::vector<int32_t> stack{tree.root};
-    while (!stack.empty()) {
-        const int32_t child = stack.back();
-        stack.pop_back();
-        if (BspTree::is_leaf(child))
-            continue;
-        if (seen[child]++)
-            bsp.in.fail(bsp.record(kNodes, uint32_t(child)),
-                        "node " + std::to_string(child) + " is reached twice from the root (the tree has a cycle)");
-        stack.push_back(tree.nodes[child].children[0]);
-        stack.push_back(tree.nodes[child].children[1]);
-    }
+    if (const int32_t twice = node_reached_twice(tree); twice >= 0)
+        bsp.in.fail(bsp.record(kNodes, uint32_t(twice)),
+                    "node " + std::to_string(twice) + " is reached twice from the root (the tree has a cycle)");
 }
 
 uint32_t contents_flags(int32_t contents)

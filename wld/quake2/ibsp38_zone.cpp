@@ -122,19 +122,9 @@ void read_tree(const Q2& q, const Model& world, Zone& zone)
         tree.root = world.headnode;
     }
     // The walk must end: every node reachable from the root is reached exactly once.
-    std::vector<uint8_t> seen(nodes, 0);
-    std::vector<int32_t> stack{tree.root};
-    while (!stack.empty()) {
-        const int32_t child = stack.back();
-        stack.pop_back();
-        if (BspTree::is_leaf(child))
-            continue;
-        if (seen[size_t(child)]++)
-            q.in.fail(q.record(kQ2LumpNodes, kNodeBytes, uint32_t(child)),
-                      "node " + std::to_string(child) + " is reached twice from the root (the tree has a cycle)");
-        stack.push_back(tree.nodes[size_t(child)].children[0]);
-        stack.push_back(tree.nodes[size_t(child)].children[1]);
-    }
+    if (const int32_t twice = node_reached_twice(tree); twice >= 0)
+        q.in.fail(q.record(kQ2LumpNodes, kNodeBytes, uint32_t(twice)),
+                  "node " + std::to_string(twice) + " is reached twice from the root (the tree has a cycle)");
 }
 
 // The leaves the world's tree reaches, in leaf order.
@@ -153,6 +143,20 @@ std::vector<uint8_t> world_leaves(const BspTree& tree, size_t leaves)
         stack.push_back(tree.nodes[size_t(child)].children[1]);
     }
     return reached;
+}
+
+// A leaf's bounds: two corners of three shorts after its contents, cluster and area.
+Aabb leaf_box(const Q2& q, uint32_t leaf)
+{
+    const uint64_t at = q.record(kQ2LumpLeafs, kQ2LeafBytes, leaf);
+    Aabb box;
+    for (uint64_t corner : {at + 8, at + 14}) {
+        glm::vec3 p;
+        for (int k = 0; k < 3; ++k)
+            p[k] = float(q.in.read<int16_t>(corner + 2 * uint64_t(k), "leaf bounds"));
+        box.grow(p);
+    }
+    return box;
 }
 
 uint32_t contents_flags(int32_t contents)
@@ -181,7 +185,6 @@ std::vector<int32_t> read_regions(const Q2& q, Zone& zone)
     uint64_t solid = 0, without_cluster = 0; // leaves that are not regions
     for (uint32_t i = 0; i < leaves.size(); ++i) {
         const Q2Leaf& leaf = leaves[i];
-        const uint64_t at = q.record(kQ2LumpLeafs, kQ2LeafBytes, i);
         const bool is_solid = (leaf.contents & kContentsSolid) != 0;
         if (leaf.cluster < 0 || is_solid || !reached[i]) { // detail solid leaves keep a cluster
             zone.tree.leaf_region[i] = is_solid ? kLeafSolid : kLeafOutside;
@@ -196,12 +199,7 @@ std::vector<int32_t> read_regions(const Q2& q, Zone& zone)
         const int32_t visible = contents & kContentsVisible;
         const int32_t clear = contents & (kContentsTranslucent | kContentsDetail) ? 0 : visible;
         region.vis_contents = uint16_t(visible | clear << 8);
-        for (uint64_t corner : {at + 8, at + 14}) {
-            glm::vec3 p;
-            for (int k = 0; k < 3; ++k)
-                p[k] = float(q.in.read<int16_t>(corner + 2 * uint64_t(k), "leaf bounds"));
-            region.bounds.grow(p);
-        }
+        region.bounds = leaf_box(q, i);
         zone.regions.push_back(region);
         cluster_of_region.push_back(leaf.cluster);
         zone.region_areas.push_back(leaf.area);
@@ -413,14 +411,7 @@ void read_areas(const Q2& q, Zone& zone)
     for (size_t i = 0; i < q.file.leaves.size(); ++i) {
         if (!(q.file.leaves[i].contents & kContentsAreaPortal))
             continue;
-        Aabb box;
-        const uint64_t at = q.record(kQ2LumpLeafs, kQ2LeafBytes, uint32_t(i));
-        for (uint64_t corner : {at + 8, at + 14}) {
-            glm::vec3 p;
-            for (int k = 0; k < 3; ++k)
-                p[k] = float(q.in.read<int16_t>(corner + 2 * uint64_t(k), "leaf bounds"));
-            box.grow(p);
-        }
+        const Aabb box = leaf_box(q, uint32_t(i));
         touching.clear();
         quake::leaves_touching_box(zone.tree, Aabb{box.min - 1.0f, box.max + 1.0f}, touching);
         std::set<int32_t> around;
