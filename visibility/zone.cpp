@@ -117,4 +117,17 @@ void Zone::shrink_to_fit()
     area_portals.shrink_to_fit();
 }
 
+std::vector<uint8_t> translucent_face_mask(const Zone& zone)
+{
+    std::vector<uint8_t> mask;
+    for (size_t f = 0; f < zone.mesh.faces.size(); ++f) {
+        const uint32_t material = zone.mesh.faces[f].material;
+        if (material < zone.materials.size() && (zone.materials[material].flags & kMaterialTranslucent)) {
+            mask.resize(zone.mesh.faces.size(), 0);
+            mask[f] = 1;
+        }
+    }
+    return mask;
+}
+
 } // namespace pvs

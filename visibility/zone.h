@@ -208,4 +208,10 @@ struct Zone {
     void shrink_to_fit();
 };
 
+// Per mesh face, 1 where the face's material is kMaterialTranslucent (drawn, but hiding nothing
+// behind it: Quake 2's SURF_TRANS33/66 glass and water); empty when no face is, so a zone
+// without glass pays nothing. Sight methods that draw pictures (the raster baker) let such a face
+// through and still count it as seen. A face naming no material is opaque.
+std::vector<uint8_t> translucent_face_mask(const Zone& zone);
+
 } // namespace pvs

@@ -9,7 +9,9 @@
 //    bound), and on every stability case nothing outside the truth (test_stability_cases.cpp);
 //  - denser sampling only adds: more points per region, or a lattice step halved;
 //  - deterministic for any thread count; cancel stops it;
-//  - the two engines (pixel rays, the rasteriser) see the same faces but at triangle edges.
+//  - the two engines (pixel rays, the rasteriser) see the same faces but at triangle edges;
+//  - translucent faces (Quake 2 glass) hide nothing: glass in room A's wall shows A room B's far
+//    wall, while room B, whose own wall stays opaque, still sees only itself - both engines.
 #include "tests/support/obj_boxes.h"
 #include "visibility/bit_row.h"
 #include "visibility/eval/pvs_gap.h"
@@ -201,6 +203,55 @@ TEST(RasterEngines, RaysAndTheRasteriserSeeTheSameFaces)
         const Pvs by_raster = bake_raster_grid(rooms, *rooms.view_grid, params);
         const PvsGap gap = pvs_gap(&by_rays, by_raster);
         EXPECT_EQ(gap.missing_bits + gap.excess_bits, 0u) << (cull ? "culling back faces" : "drawing back faces");
+    }
+}
+
+// Room A's wall at x = 100 made glass (translucent); room B's wall at x = 110 stays opaque. From
+// A the eye looks through its own wall, across the rock, at B's wall: A sees B. From B its own
+// opaque wall hides A, and A's glass, facing away from B, is culled: B sees B only. Without the
+// translucent material both rooms see themselves only (TwoRoomsAndAWall).
+TEST(RasterVis, TranslucentFacesHideNothing)
+{
+    Zone zone = two_rooms();
+    ASSERT_TRUE(zone.view_grid);
+    Material glass;
+    glass.name = "glass";
+    glass.flags = kMaterialTranslucent;
+    zone.materials.push_back(glass);
+    // Room A is one face (one object, one material); its quad at x = 100 is written last, so
+    // its last two triangles become a face of their own, in room A, made of glass.
+    ASSERT_EQ(zone.region_count(), 2u);
+    ASSERT_EQ(zone.faces_of_region(0).size(), 1u);
+    Face& room_a = zone.mesh.faces[zone.faces_of_region(0)[0]];
+    ASSERT_GE(room_a.triangle_count, 2u);
+    Face wall{room_a.first_triangle + room_a.triangle_count - 2, 2, uint32_t(zone.materials.size() - 1)};
+    for (uint32_t t = wall.first_triangle; t < wall.first_triangle + 2; ++t)
+        for (uint32_t k = 0; k < 3; ++k)
+            ASSERT_EQ(zone.mesh.positions[zone.mesh.indices[3 * t + k]].x, 100.0f) << "room A's wall at x = 100";
+    room_a.triangle_count -= 2;
+    zone.region_faces.insert(zone.region_faces.begin() + zone.region_face_offsets[1], uint32_t(zone.mesh.faces.size()));
+    ++zone.region_face_offsets[1];
+    ++zone.region_face_offsets[2];
+    zone.mesh.faces.push_back(wall);
+    ASSERT_EQ(translucent_face_mask(zone).size(), zone.mesh.faces.size());
+    const ViewGrid& grid = *zone.view_grid;
+    const std::vector<uint32_t> b{1}, ab{0, 1};
+    for (RasterEngine engine : {RasterEngine::Rays, RasterEngine::Rasteriser}) {
+        RasterParams params;
+        params.raster.resolution = 16;
+        params.points_per_region = 4;
+        params.engine = engine;
+        const Pvs pvs = bake_raster_grid(zone, grid, params);
+        for (uint32_t cell = 0; cell < grid.cell_count(); ++cell) {
+            const float x = grid.cell_bounds(cell).center().x;
+            SCOPED_TRACE(std::string(engine == RasterEngine::Rays ? "rays" : "rasteriser") + ", cell at x " +
+                         std::to_string(x));
+            if (x < 100.0f) {
+                EXPECT_EQ(row_of(pvs, cell), ab);
+            } else if (x > 110.0f) {
+                EXPECT_EQ(row_of(pvs, cell), b);
+            }
+        }
     }
 }
 

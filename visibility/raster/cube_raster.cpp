@@ -30,8 +30,15 @@ CubeRaster::CubeRaster(const Zone& zone, const CubeRasterOptions& options)
       near_(options.near_distance > 0.0f ? options.near_distance : 0.05f)
 {
     const Mesh& mesh = zone.mesh;
-    for (uint32_t f = 0; f < mesh.faces.size(); ++f) {
-        const Face& face = mesh.faces[f];
+    const std::vector<uint8_t> translucent = translucent_face_mask(zone);
+    const auto is_translucent = [&](uint32_t f) { return !translucent.empty() && translucent[f] != 0; };
+    // The opaque faces' triangles first, then the translucent ones: render() draws them last.
+    for (uint32_t f = 0; f < 2 * mesh.faces.size(); ++f) {
+        if (f == mesh.faces.size())
+            first_translucent_ = triangle_face_.size();
+        if (is_translucent(f % uint32_t(mesh.faces.size())) != (f >= mesh.faces.size()))
+            continue;
+        const Face& face = mesh.faces[f % mesh.faces.size()];
         for (uint32_t t = face.first_triangle; t < face.first_triangle + face.triangle_count; ++t) {
             if (3 * size_t(t) + 2 >= mesh.indices.size())
                 break;
@@ -45,10 +52,11 @@ CubeRaster::CubeRaster(const Zone& zone, const CubeRasterOptions& options)
             if (!ok)
                 continue;
             corners_.insert(corners_.end(), {p[0], p[1], p[2]});
-            triangle_face_.push_back(f);
+            triangle_face_.push_back(f % uint32_t(mesh.faces.size()));
             triangle_normal_.push_back(glm::cross(p[1] - p[0], p[2] - p[0]));
         }
     }
+    first_translucent_ = std::min(first_translucent_, triangle_face_.size());
     const size_t pixels = size_t(resolution_) * resolution_;
     depth_.assign(6 * pixels, 0.0f);
     id_.assign(6 * pixels, 0);
@@ -58,7 +66,11 @@ void CubeRaster::render(const glm::vec3& eye, std::vector<uint8_t>& seen)
 {
     std::fill(depth_.begin(), depth_.end(), 0.0f);
     std::fill(id_.begin(), id_.end(), 0u);
+    seen_ = &seen;
     for (size_t t = 0; t < triangle_face_.size(); ++t) {
+        // Translucent triangles come last: depth-tested against everything opaque, marking their
+        // face seen where they pass, but writing no depth or id, so what lies behind stays seen.
+        translucent_pass_ = t >= first_translucent_;
         const glm::vec3 d[3] = {corners_[3 * t] - eye, corners_[3 * t + 1] - eye, corners_[3 * t + 2] - eye};
         // Counter-clockwise from the front: the eye is in front when it is on the normal's side.
         if (cull_back_faces_ && !(glm::dot(triangle_normal_[t], -d[0]) > 0.0f))
@@ -202,6 +214,10 @@ void CubeRaster::fill(int view, const Vertex& a, const Vertex& b, const Vertex& 
             const float z = std::clamp((f_bc * a.inv_w + f_ca * b.inv_w + f_ab * c.inv_w) * inv_area, z_min, z_max);
             const size_t i = size_t(y) * resolution_ + size_t(x);
             if (z > depth[i]) {
+                if (translucent_pass_) {
+                    (*seen_)[face] = 1;
+                    continue;
+                }
                 depth[i] = z;
                 id[i] = face + 1;
             }

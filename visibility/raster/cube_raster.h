@@ -9,6 +9,9 @@
 // edge functions at pixel centres, depth as 1/w (linear in screen space). No allocation per
 // point or per triangle: buffers and clip scratch live in the object. Not thread-safe: one per
 // thread. Cost: O(triangles) per point plus the filled pixels (e1m1: about 0.3 ms a point at 64²).
+//
+// Translucent faces (translucent_face_mask: Quake 2 glass) hide nothing: they are drawn after
+// every opaque one, depth-tested but writing no depth, and are seen wherever a pixel passes.
 #pragma once
 
 #include "visibility/zone.h"
@@ -46,6 +49,9 @@ private:
     uint32_t resolution_;
     bool cull_back_faces_;
     float near_;
+    size_t first_translucent_ = SIZE_MAX; // triangles from here on are translucent (drawn last)
+    bool translucent_pass_ = false;
+    std::vector<uint8_t>* seen_ = nullptr; // render()'s output, for the translucent pass
     std::vector<float> depth_;  // 6 * resolution^2: 1/w of the nearest fragment (0 = empty)
     std::vector<uint32_t> id_;  // face + 1 of the nearest fragment (0 = empty)
 };

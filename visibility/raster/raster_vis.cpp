@@ -43,6 +43,7 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
 {
     const auto start = std::chrono::steady_clock::now();
     const FaceRegions faces = build_face_regions(zone);
+    const std::vector<uint8_t> translucent = translucent_face_mask(zone);
     const uint32_t regions = uint32_t(zone.region_count());
     const size_t words = bits::words_for(regions);
     std::vector<uint64_t> rows(size_t(cells) * words, 0);
@@ -54,7 +55,7 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
         [&] {
             Worker w;
             if (params.engine == RasterEngine::Rays)
-                w.rays.emplace(*tracer, params.raster);
+                w.rays.emplace(*tracer, params.raster, translucent);
             else
                 w.raster.emplace(zone, params.raster);
             w.seen.assign(zone.mesh.faces.size(), 0);
