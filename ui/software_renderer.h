@@ -127,8 +127,9 @@ inline constexpr uint32_t kNoTint = 0xFFFFFFFFu;
 
 // The PVS membership tints (the inspector's membership overlay: a region's part in this frame's
 // culling, ui/zone_overlays.h Membership order): the culling camera's region, drawn, culled by the
-// frustum, culled by the PVS. They follow the flag tints in one palette of tint indices.
-inline constexpr std::array<uint32_t, 4> kMembershipTints{0xFFFFFF, 0x40E040, 0xFFA020, 0xE03030};
+// frustum, culled by the PVS, culled by a shut Quake 2 areaportal. They follow the flag tints in
+// one palette of tint indices.
+inline constexpr std::array<uint32_t, 5> kMembershipTints{0xFFFFFF, 0x40E040, 0xFFA020, 0xE03030, 0xB060FF};
 inline constexpr uint32_t kMembershipTintBase = uint32_t(kFlagTints.size());
 inline constexpr uint32_t kTintPaletteSize = kMembershipTintBase + uint32_t(kMembershipTints.size());
 // 0xRRGGBB of palette index `tint` (< kTintPaletteSize).

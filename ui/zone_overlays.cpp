@@ -40,12 +40,12 @@ void collect_membership_boxes(const OverlayScene& scene, OverlayLines& lines)
     const Frustum view = Frustum::from_view_projection(scene.view.view_projection());
     for (std::vector<uint32_t>& list : lines.by_class)
         list.clear();
-    membership_tints(zone, scene.cull_region, scene.visible, scene.after_pvs, lines.tints);
+    membership_tints(zone, scene.cull_region, scene.visible, scene.after_pvs, lines.tints, scene.area_culled);
     for (uint32_t r = 0; r < zone.region_count(); ++r)
         if (view.intersects(zone.regions[r].bounds))
             lines.by_class[lines.tints[r] - kMembershipTintBase].push_back(r);
-    for (Membership pass : {Membership::CulledByPvs, Membership::CulledByFrustum, Membership::Drawn,
-                            Membership::Current})
+    for (Membership pass : {Membership::CulledByPvs, Membership::CulledByFrustum, Membership::CulledByArea,
+                            Membership::Drawn, Membership::Current})
         for (uint32_t r : lines.by_class[size_t(pass)])
             lines.membership_boxes.add_box(zone.regions[r].bounds, membership_color(pass));
 }
@@ -154,7 +154,8 @@ void paint_pair(Image& image, const OverlayScene& scene, const LineProjection& l
 } // namespace
 
 void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
-                      std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out)
+                      std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out,
+                      std::span<const uint32_t> area_culled)
 {
     // A list at a time (a binary search per region cost milliseconds a frame on an outdoor zone).
     out.assign(zone.region_count(), kMembershipTintBase + uint32_t(Membership::CulledByPvs));
@@ -164,6 +165,7 @@ void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_
                 out[r] = kMembershipTintBase + uint32_t(membership);
     };
     mark(after_pvs, Membership::CulledByFrustum);
+    mark(area_culled, Membership::CulledByArea);
     mark(visible, Membership::Drawn);
     if (current >= 0 && size_t(current) < out.size())
         out[size_t(current)] = kMembershipTintBase + uint32_t(Membership::Current);
@@ -176,6 +178,7 @@ uint32_t membership_color(Membership membership)
     case Membership::Drawn: return kDrawnRegionColor;
     case Membership::CulledByFrustum: return kFrustumCulledColor;
     case Membership::CulledByPvs: return kPvsCulledColor;
+    case Membership::CulledByArea: return kAreaCulledColor;
     }
     return 0;
 }
@@ -187,6 +190,7 @@ const char* membership_name(Membership membership)
     case Membership::Drawn: return "in PVS, drawn";
     case Membership::CulledByFrustum: return "in PVS, culled by frustum";
     case Membership::CulledByPvs: return "culled by PVS";
+    case Membership::CulledByArea: return "in PVS and frustum, behind a shut areaportal";
     }
     return "?";
 }
@@ -264,8 +268,9 @@ std::vector<LegendEntry> overlay_legend(const OverlaySettings& settings, bool gr
     }
     if (settings.pvs_membership || settings.pvs_membership_boxes)
         for (Membership m : {Membership::Current, Membership::Drawn, Membership::CulledByFrustum,
-                             Membership::CulledByPvs})
-            legend.push_back({membership_name(m), membership_color(m)});
+                             Membership::CulledByPvs, Membership::CulledByArea})
+            if (m != Membership::CulledByArea || area_portals)
+                legend.push_back({membership_name(m), membership_color(m)});
     if (settings.region_bounds)
         legend.push_back({"drawn region bounds (region colour)", 0xC0C0C0});
     if (settings.portals)

@@ -62,13 +62,15 @@ struct OverlaySettings {
 const char* hidden_lines_name(HiddenLines mode); // shown, faint, hidden
 
 // A region's part in this frame's culling.
-enum class Membership : uint8_t { Current, Drawn, CulledByFrustum, CulledByPvs };
+// CulledByArea: in the PVS and the frustum, but in an area a shut Quake 2 areaportal cuts off.
+enum class Membership : uint8_t { Current, Drawn, CulledByFrustum, CulledByPvs, CulledByArea };
 
 // Colours (0xRRGGBB) and fill weights (out of 256).
 inline constexpr uint32_t kCurrentRegionColor = kMembershipTints[0]; // the same colours tint the faces
 inline constexpr uint32_t kDrawnRegionColor = kMembershipTints[1];
 inline constexpr uint32_t kFrustumCulledColor = kMembershipTints[2];
 inline constexpr uint32_t kPvsCulledColor = kMembershipTints[3];
+inline constexpr uint32_t kAreaCulledColor = kMembershipTints[4];
 inline constexpr uint32_t kSplitPlaneColor = 0x30C0FF;
 inline constexpr uint32_t kCurrentSplitPlaneColor = 0xFFE040;
 inline constexpr uint32_t kPortalColor = 0x00FFC0;
@@ -87,9 +89,11 @@ uint32_t membership_color(Membership membership);
 // One tint palette index (kMembershipTintBase + Membership) per region of `zone`, into `out`:
 // `current` (the culling camera's region, or -1) Current; the regions of `visible` Drawn; the
 // others of `after_pvs` (what the PVS stage kept, every region when it did not run)
-// CulledByFrustum; the rest CulledByPvs.
+// CulledByFrustum, but those of `area_culled` (regions the frustum kept that shut areaportals
+// then dropped) CulledByArea; the rest CulledByPvs.
 void membership_tints(const Zone& zone, int32_t current, std::span<const uint32_t> visible,
-                      std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out);
+                      std::span<const uint32_t> after_pvs, std::vector<uint32_t>& out,
+                      std::span<const uint32_t> area_culled = {});
 const char* membership_name(Membership membership);
 
 // An explained pair (visibility/eval/pair_explanation.h) as the overlay draws it: the sight line
@@ -111,6 +115,7 @@ struct OverlayScene {
     int32_t cull_cell = -1;              // grid zones: the culling camera's view cell
     std::span<const uint32_t> visible;   // drawn regions, ascending
     std::span<const uint32_t> after_pvs; // kept by the PVS stage, ascending
+    std::span<const uint32_t> area_culled; // kept by the frustum, dropped by shut areaportals
     std::span<const uint32_t> path_nodes; // node indices root -> camera leaf
     int32_t highlighted_node = -1;       // -1: the deepest of path_nodes
     const std::vector<Winding>* node_polygons = nullptr; // per node (node_plane_polygons)
@@ -138,7 +143,7 @@ struct OverlayLabel {
 // memory, reused across frames. Returns the pixels set.
 struct OverlayLines {
     LineBatch membership_boxes, region_bounds, portals;
-    std::vector<uint32_t> tints, by_class[4]; // the membership boxes' classes
+    std::vector<uint32_t> tints, by_class[5]; // the membership boxes' classes
     std::vector<uint8_t> drawn;               // per region, for the portals
 };
 uint32_t paint_line_overlays(Image& image, const OverlaySettings& settings, const OverlayScene& scene,

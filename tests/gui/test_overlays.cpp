@@ -153,6 +153,10 @@ TEST(ZoneOverlays, MembershipClasses)
                                             tint(ui::Membership::Drawn)}));
     ui::membership_tints(zone, -1, visible, after_pvs, tints); // no camera region: 1 is drawn
     EXPECT_EQ(tints[1], tint(ui::Membership::Drawn));
+    const std::vector<uint32_t> area_culled{2}; // in the PVS and the frustum, behind a shut door
+    ui::membership_tints(zone, 1, visible, after_pvs, tints, area_culled);
+    EXPECT_EQ(tints[2], tint(ui::Membership::CulledByArea));
+    EXPECT_EQ(tints[4], tint(ui::Membership::Drawn));
 }
 
 TEST(ZoneOverlays, LegendFollowsTheToggles)
@@ -294,9 +298,28 @@ TEST(Quake2AreaPortals, AShutDoorDropsTheAreaBehindItAndShowsRed)
     const CullStats shut = state.frame();
     EXPECT_GT(state.last_area_dropped(), 0u);
     EXPECT_EQ(shut.regions_after_frustum + state.last_area_dropped(), open.regions_after_frustum);
+    // The dropped regions: each in a region's area the shut doors cut off, none of them drawn, and
+    // each tinted as such (not "culled by frustum": they are in the frustum).
+    ASSERT_EQ(state.last_area_culled().size(), state.last_area_dropped());
+    std::vector<uint32_t> tints;
+    ui::membership_tints(zone, shut.region, state.visible_regions(), state.after_pvs_regions(), tints,
+                         state.last_area_culled());
+    for (uint32_t r : state.last_area_culled()) {
+        EXPECT_NE(zone.region_areas[r], 1);
+        EXPECT_FALSE(std::binary_search(state.visible_regions().begin(), state.visible_regions().end(), r));
+        EXPECT_EQ(tints[r], ui::kMembershipTintBase + uint32_t(ui::Membership::CulledByArea));
+    }
     const auto legend = ui::overlay_legend(state.overlays, false, false, false, true);
     EXPECT_TRUE(std::any_of(legend.begin(), legend.end(),
                             [](const ui::LegendEntry& e) { return e.rgb == ui::kClosedAreaPortalColor; }));
+    ui::OverlaySettings membership = state.overlays;
+    membership.pvs_membership = true;
+    const auto tinted_legend = ui::overlay_legend(membership, false, false, false, true);
+    EXPECT_TRUE(std::any_of(tinted_legend.begin(), tinted_legend.end(),
+                            [](const ui::LegendEntry& e) { return e.rgb == ui::kAreaCulledColor; }));
+    const auto other_zones = ui::overlay_legend(membership, false, false, false, false);
+    EXPECT_FALSE(std::any_of(other_zones.begin(), other_zones.end(),
+                             [](const ui::LegendEntry& e) { return e.rgb == ui::kAreaCulledColor; }));
 }
 
 } // namespace

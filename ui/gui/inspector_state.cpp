@@ -288,11 +288,17 @@ const CullStats& InspectorState::frame()
     cull_options.distance_stage = far_clip > 0.0f;
     last_cull_ = culler_->cull(cull_, cull_options, visible_);
     area_dropped_ = 0;
+    area_culled_.clear();
     if (!zone_->area_portals.empty() && last_cull_.region >= 0 && size_t(last_cull_.region) < zone_->region_areas.size()) {
         const std::vector<uint8_t> reached =
             areas_reached(*zone_, zone_->region_areas[size_t(last_cull_.region)], closed_area_portals);
+        area_culled_ = visible_;
         area_dropped_ = keep_reached_areas(*zone_, reached, visible_);
         last_cull_.regions_after_frustum -= uint32_t(area_dropped_);
+        // What the areaportals dropped (both lists ascending), for the membership overlay.
+        const auto end = std::set_difference(area_culled_.begin(), area_culled_.end(), visible_.begin(),
+                                             visible_.end(), area_culled_.begin());
+        area_culled_.erase(end, area_culled_.end());
     }
     update_after_pvs();
     try {
@@ -307,7 +313,7 @@ const CullStats& InspectorState::frame()
             for (uint32_t r = 0; r < zone_->region_count(); ++r)
                 if (picture.intersects(zone_->regions[r].bounds))
                     picture_regions_.push_back(r);
-            ui::membership_tints(*zone_, last_cull_.region, visible_, after_pvs_, region_tints_);
+            ui::membership_tints(*zone_, last_cull_.region, visible_, after_pvs_, region_tints_, area_culled_);
         }
         // The many-line overlays need no picture: they are drawn into a layer on the second
         // core while the picture renders, and composited in their place (ui/overlay_layer.h).

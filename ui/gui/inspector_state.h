@@ -152,6 +152,7 @@ public:
     // the engine does; last_area_dropped() says how many.
     std::vector<uint8_t> closed_area_portals;
     size_t last_area_dropped() const { return area_dropped_; }
+    const std::vector<uint32_t>& last_area_culled() const { return area_culled_; } // ascending
     ui::RenderMode render_mode = ui::RenderMode::Textured;
 
     // The picture's size in pixels (1 .. 8192 each, clamped); the view camera's aspect follows.
@@ -349,6 +350,7 @@ private:
 
     std::vector<uint32_t> after_pvs_;
     size_t area_dropped_ = 0;
+    std::vector<uint32_t> area_culled_; // this frame's regions the frustum kept and shut areaportals dropped
     std::vector<uint32_t> picture_regions_, region_tints_; // the membership tint's frame lists
     std::vector<ui::OverlayLabel> labels_;
     ui::OverlayLines overlay_lines_; // paint_line_layer's working memory

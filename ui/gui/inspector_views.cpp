@@ -126,6 +126,7 @@ ui::OverlayScene InspectorState::overlay_scene()
     scene.cull_cell = last_cull_.cell;
     scene.visible = visible_;
     scene.after_pvs = after_pvs_;
+    scene.area_culled = area_culled_;
     scene.path_nodes = path_nodes_;
     scene.highlighted_node = selected_node;
     if (overlays.split_planes)
