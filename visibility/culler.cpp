@@ -191,7 +191,10 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
                                                                             : FrustumBoxes::Planes::All,
                                        blocks_ ? blocks_->coordinate_scale() : 0.0f);
     }
-    visible.resize(stats.regions_after_pvs);
+    // Big zones: whole blocks of ids at a time, for the distance and the frustum (the same answers).
+    const bool by_blocks = blocks_ && !add_own_region && (planes || want_distance);
+    if (!(by_blocks && planes)) // the block stage's frustum fills `visible` itself
+        visible.resize(stats.regions_after_pvs);
     size_t kept = 0;
     // The first stage after the PVS: every candidate is written and the count advances only for
     // the ones kept, no branch on the test's answer. With a distance stage the frustum runs after.
@@ -200,8 +203,6 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
         visible[kept] = r;
         kept += frustum_now ? size_t(boxes_.intersects(r, *planes)) : 1u;
     };
-    // Big zones: whole blocks of ids at a time, for the distance and the frustum (the same answers).
-    const bool by_blocks = blocks_ && !add_own_region && (planes || want_distance);
     if (by_blocks) {
         const std::span<const uint64_t> candidates = stats.pvs_used ? row : std::span<const uint64_t>(every_region_);
         std::span<const uint64_t> survivors = candidates;
@@ -209,12 +210,16 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
             stats.pvs_us += clock.lap();
             near_.resize(candidates.size());
             stats.regions_after_distance =
-                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), block_scratch_, near_));
+                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), near_));
             survivors = near_;
             stats.distance_us = clock.lap();
         }
         if (planes) {
-            kept = blocks_->collect(survivors, boxes_, *planes, block_scratch_, visible.data());
+            // Into scratch of the zone's size, then only the kept ids into `visible`: growing
+            // `visible` to the row's size would zero tens of thousands of entries a frame.
+            block_out_.resize(region_count);
+            kept = blocks_->collect(survivors, boxes_, *planes, block_scratch_, block_out_.data());
+            visible.assign(block_out_.begin(), block_out_.begin() + std::ptrdiff_t(kept));
         } else {
             bits::for_each_set(survivors, [&](size_t r) { visible[kept++] = uint32_t(r); });
         }

@@ -112,6 +112,7 @@ private:
     std::vector<uint64_t> every_region_;
     std::vector<uint64_t> near_; // the distance stage's survivors, as a row
     RegionBlocks::Scratch block_scratch_;
+    std::vector<uint32_t> block_out_; // the block stage's output, before it is copied to `visible`
     Aabb zone_bounds_;
     std::optional<PvsRowCursor> cursor_;
     std::vector<uint32_t> candidates_; // the PVS stage's regions, only when counting triangles

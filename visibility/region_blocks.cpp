@@ -105,80 +105,62 @@ RegionBlocks::RegionBlocks(std::span<const Aabb> region_boxes)
       scale_(largest_coordinate(region_boxes)), member_boxes_(member_boxes(region_boxes, member_)),
       nodes_(level_boxes(member_boxes(region_boxes, member_), level_first_, level_size_))
 {
-    // Per row word, the blocks its regions belong to and which of its bits each holds, so a
-    // block taken whole is taken a word at a time, not a region at a time.
-    const size_t words = bits::words_for(region_count_);
-    std::vector<std::vector<WordPart>> parts(words);
-    for (uint32_t i = 0; i < member_.size(); ++i) {
-        const uint32_t r = member_[i], block = i / kBlock;
-        std::vector<WordPart>& list = parts[r / 64];
-        if (list.empty() || list.back().block != block)
-            list.push_back({block, 0});
-        list.back().mask |= uint64_t{1} << (r % 64);
-    }
-    word_first_.assign(words + 1, 0);
-    for (size_t w = 0; w < words; ++w) {
-        std::sort(parts[w].begin(), parts[w].end(), [](const WordPart& a, const WordPart& b) { return a.block < b.block; });
-        // Members of one block come in any id order: merge the repeats.
-        for (const WordPart& part : parts[w])
-            if (!word_parts_.empty() && word_first_[w] < word_parts_.size() && word_parts_.back().block == part.block)
-                word_parts_.back().mask |= part.mask;
-            else
-                word_parts_.push_back(part);
-        word_first_[w + 1] = uint32_t(word_parts_.size());
-    }
 }
 
 size_t RegionBlocks::memory_bytes() const
 {
-    return (member_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity() +
-            word_first_.capacity()) * sizeof(uint32_t) + word_parts_.capacity() * sizeof(WordPart) +
+    return (member_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity()) * sizeof(uint32_t) +
            member_boxes_.memory_bytes() + nodes_.memory_bytes();
 }
 
-// Visits the tree from `node` at `level`: decide(box) says Outside / Inside / Partial for a
-// node's box; take(block, side) handles a whole block (Inside or Partial at level 0).
+// Visits the tree from `node` at `level`: decide(box, tests) says Outside / Inside / Partial for a
+// node's box, given `tests` (what the node's parent left to decide: for the frustum, the planes
+// crossing it) and narrowing them for the children; take(block, side, tests) handles a whole
+// block (Inside or Partial at level 0).
 template <class Decide, class Take>
-void RegionBlocks::walk(uint32_t level, uint32_t node, Decide&& decide, Take&& take) const
+void RegionBlocks::walk(uint32_t level, uint32_t node, unsigned tests, Decide&& decide, Take&& take) const
 {
-    const FrustumBoxes::Side side = decide(level_first_[level] + node);
+    const FrustumBoxes::Side side = decide(level_first_[level] + node, tests);
     if (side == FrustumBoxes::Side::Outside)
         return;
     if (side == FrustumBoxes::Side::Partial && level > 0) {
         for (uint32_t child = node * 2; child <= node * 2 + 1 && child < level_size_[level - 1]; ++child)
-            walk(level - 1, child, decide, take);
+            walk(level - 1, child, tests, decide, take);
         return;
     }
     const uint32_t first = node << level;
     const uint32_t last = std::min(level_size_[0], (node + 1) << level);
     for (uint32_t block = first; block < last; ++block)
-        take(block, side);
+        take(block, side, tests);
 }
 
 // walk() from every node of the top level.
 template <class Decide, class Take>
-void RegionBlocks::walk_all(Decide&& decide, Take&& take) const
+void RegionBlocks::walk_all(unsigned tests, Decide&& decide, Take&& take) const
 {
     if (level_size_.empty() || level_size_[0] == 0)
         return;
     const uint32_t top = uint32_t(level_size_.size() - 1);
     for (uint32_t node = 0; node < level_size_[top]; ++node)
-        walk(top, node, decide, take);
+        walk(top, node, tests, decide, take);
 }
 
-// Sets in `out` the row's bits of every block `sides` calls Inside, a word at a time.
-void RegionBlocks::take_inside(std::span<const uint64_t> row, const std::vector<uint8_t>& sides,
-                               std::span<uint64_t> out) const
+// Bit i set when the row holds the block's member i.
+uint64_t RegionBlocks::members_in_row(uint32_t block, std::span<const uint64_t> row) const
 {
-    for (size_t w = 0; w + 1 < word_first_.size(); ++w) {
-        if (row[w] == 0)
-            continue;
-        uint64_t inside = 0;
-        for (uint32_t k = word_first_[w]; k < word_first_[w + 1]; ++k)
-            if (sides[word_parts_[k].block] == uint8_t(FrustumBoxes::Side::Inside))
-                inside |= word_parts_[k].mask;
-        out[w] |= row[w] & inside;
-    }
+    const uint32_t first = block * kBlock;
+    const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+    uint64_t in_row = 0;
+    for (uint32_t i = 0; i < count; ++i)
+        in_row |= uint64_t(bits::test(row, member_[first + i])) << i;
+    return in_row;
+}
+
+// Sets in `out` the region of each of the block's members that `members` holds.
+void RegionBlocks::set_members(uint32_t block, uint64_t members, std::span<uint64_t> out) const
+{
+    for (; members != 0; members &= members - 1)
+        bits::set(out, member_[block * kBlock + uint32_t(std::countr_zero(members))]);
 }
 
 size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& regions,
@@ -186,27 +168,19 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
 {
     std::vector<uint64_t>& taken = scratch.bits;
     taken.assign(row.size(), 0);
-    scratch.sides.assign(level_size_.empty() ? 0 : level_size_[0], uint8_t(FrustumBoxes::Side::Outside));
-    const auto decide = [&](uint32_t box) { return nodes_.classify(box, planes); };
-    const auto take = [&](uint32_t block, FrustumBoxes::Side side) {
-        scratch.sides[block] = uint8_t(side);
-        if (side != FrustumBoxes::Side::Partial)
-            return; // Inside blocks are taken a word at a time below
-        const uint32_t first = block * kBlock;
-        const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
-        uint64_t in_row = 0; // which members the row holds
-        for (uint32_t i = 0; i < count; ++i)
-            in_row |= uint64_t(bits::test(row, member_[first + i])) << i;
-        if (in_row == 0)
-            return;
-        uint64_t keep = in_row & member_boxes_.intersect_mask(first, count, planes);
-        while (keep) {
-            bits::set(taken, member_[first + uint32_t(std::countr_zero(keep))]);
-            keep &= keep - 1;
+    // Only the planes that cross a node are tested for its children (as Quake's clip flags).
+    const auto decide = [&](uint32_t box, unsigned& crossing) { return nodes_.classify(box, planes, crossing); };
+    const auto take = [&](uint32_t block, FrustumBoxes::Side side, unsigned crossing) {
+        const uint64_t in_row = members_in_row(block, row);
+        if (side == FrustumBoxes::Side::Partial && in_row != 0) {
+            const uint32_t first = block * kBlock;
+            const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+            set_members(block, in_row & member_boxes_.intersect_mask(first, count, planes, crossing, in_row), taken);
+        } else {
+            set_members(block, in_row, taken); // Inside: every member the row holds
         }
     };
-    walk_all(decide, take);
-    take_inside(row, scratch.sides, taken);
+    walk_all(FrustumBoxes::all_planes(planes), decide, take);
     for (uint32_t r : odd_)
         if (bits::test(row, r) && regions.intersects(r, planes))
             bits::set(taken, r);
@@ -216,32 +190,28 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
 }
 
 size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye,
-                               float limit, Scratch& scratch, std::span<uint64_t> near) const
+                               float limit, std::span<uint64_t> near) const
 {
     std::fill(near.begin(), near.end(), 0);
-    scratch.sides.assign(level_size_.empty() ? 0 : level_size_[0], uint8_t(FrustumBoxes::Side::Outside));
     // Float distances of a box inside a node differ from the node's by far less than this.
     constexpr float kMargin = 1e-4f;
-    const auto decide = [&](uint32_t box) {
+    const auto decide = [&](uint32_t box, unsigned) {
         if (nodes_.squared_distance(box, eye) > limit * (1.0f + kMargin))
             return FrustumBoxes::Side::Outside;
         return nodes_.squared_reach(box, eye) < limit * (1.0f - kMargin) ? FrustumBoxes::Side::Inside
                                                                           : FrustumBoxes::Side::Partial;
     };
-    const auto take = [&](uint32_t block, FrustumBoxes::Side side) {
-        scratch.sides[block] = uint8_t(side);
-        if (side != FrustumBoxes::Side::Partial)
-            return;
-        const uint32_t first = block * kBlock;
-        const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
-        for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t r = member_[first + i];
-            if (bits::test(row, r) && member_boxes_.squared_distance(first + i, eye) <= limit)
-                bits::set(near, r);
-        }
+    const auto take = [&](uint32_t block, FrustumBoxes::Side side, unsigned) {
+        uint64_t in_row = members_in_row(block, row);
+        if (side == FrustumBoxes::Side::Partial)
+            for (uint64_t rest = in_row; rest != 0; rest &= rest - 1) {
+                const uint32_t i = uint32_t(std::countr_zero(rest));
+                if (!(member_boxes_.squared_distance(block * kBlock + i, eye) <= limit))
+                    in_row &= ~(uint64_t{1} << i);
+            }
+        set_members(block, in_row, near);
     };
-    walk_all(decide, take);
-    take_inside(row, scratch.sides, near);
+    walk_all(0, decide, take);
     for (uint32_t r : odd_)
         if (bits::test(row, r) && regions.squared_distance(r, eye) <= limit)
             bits::set(near, r);

@@ -6,11 +6,12 @@
 // collect() walks the tree with the camera's row: a box wholly outside the frustum drops its
 // regions, a box wholly inside takes every region of it the row holds, and only blocks the
 // frustum's boundary crosses test their regions, four at a time (FrustumBoxes::intersect_mask,
-// on the blocks' own copies of the boxes); the blocks taken whole are taken a row word at a time
-// (per word, which of its bits each block holds). FrustumBoxes::classify decides with a round-off
-// margin, so every region gets exactly the answer FrustumBoxes::intersects gives it: the
-// output equals the per-region stage's, ascending. keep_near() does the same for the far-plane
-// sphere. Regions whose box is empty or not finite are tested one by one, always.
+// on the blocks' own copies of the boxes), against only the planes that cross the block and only
+// where the row holds one of the four; a node's children test only the planes crossing it (as
+// Quake's clip flags). FrustumBoxes::classify decides with a round-off margin, so every region
+// gets exactly the answer FrustumBoxes::intersects gives it: the output equals the per-region
+// stage's, ascending. keep_near() does the same for the far-plane sphere. Regions whose box is
+// empty or not finite are tested one by one, always.
 //
 // Read-only after construction; the caller gives the scratch (one per thread).
 #pragma once
@@ -38,7 +39,6 @@ public:
     // The caller's working memory (one per thread), reused across frames.
     struct Scratch {
         std::vector<uint64_t> bits;
-        std::vector<uint8_t> sides; // per block: FrustumBoxes::Side
     };
 
     // Writes to `out` (room for the row's set bits) the regions of `row` whose boxes intersect the
@@ -51,21 +51,17 @@ public:
     // boxes come within squared distance `limit` of `eye` (regions.squared_distance(r, eye) <=
     // limit, the same answers as testing each) and returns their count.
     size_t keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye, float limit,
-                     Scratch& scratch, std::span<uint64_t> near) const;
+                     std::span<uint64_t> near) const;
 
     size_t memory_bytes() const;
 
 private:
     template <class Decide, class Take>
-    void walk(uint32_t level, uint32_t node, Decide&& decide, Take&& take) const;
+    void walk(uint32_t level, uint32_t node, unsigned tests, Decide&& decide, Take&& take) const;
     template <class Decide, class Take>
-    void walk_all(Decide&& decide, Take&& take) const;
-    void take_inside(std::span<const uint64_t> row, const std::vector<uint8_t>& sides, std::span<uint64_t> out) const;
-
-    struct WordPart {
-        uint32_t block;
-        uint64_t mask; // the bits of the word whose regions are in `block`
-    };
+    void walk_all(unsigned tests, Decide&& decide, Take&& take) const;
+    uint64_t members_in_row(uint32_t block, std::span<const uint64_t> row) const;
+    void set_members(uint32_t block, uint64_t members, std::span<uint64_t> out) const;
 
     // Members are made in this order, and the constructor fills some while making others:
     // odd_ while member_ is made, the level tables while nodes_ is.
@@ -75,8 +71,6 @@ private:
     std::vector<uint32_t> level_first_;  // per level: its first node in nodes_
     std::vector<uint32_t> level_size_;   // per level: its node count
     float scale_ = 0.0f;
-    std::vector<uint32_t> word_first_;   // per row word: its first entry in word_parts_ (+ 1)
-    std::vector<WordPart> word_parts_;
     FrustumBoxes member_boxes_;          // the members' boxes, in member_ order
     FrustumBoxes nodes_;                 // every level's boxes, level 0 (blocks) first
 };

@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 #include <random>
@@ -86,7 +89,6 @@ TEST(RegionBlocks, KeepNearGivesEveryRegionsOwnAnswer)
     const RegionBlocks blocks(boxes);
     std::uniform_real_distribution<float> u(-500.0f, 500.0f), radius(10.0f, 600.0f);
     std::vector<uint64_t> near(bits::words_for(boxes.size()));
-    RegionBlocks::Scratch scratch;
     for (int t = 0; t < 80; ++t) {
         const glm::vec3 eye{u(rng), u(rng), u(rng)};
         float limit = radius(rng);
@@ -94,7 +96,7 @@ TEST(RegionBlocks, KeepNearGivesEveryRegionsOwnAnswer)
         if (t % 4 == 0) // exactly the distance of some box: the boundary case
             limit = regions.squared_distance(uint32_t(t * 7 % boxes.size()), eye);
         const auto row = random_row(rng, boxes.size(), 0.7);
-        const size_t kept = blocks.keep_near(row, regions, eye, limit, scratch, near);
+        const size_t kept = blocks.keep_near(row, regions, eye, limit, near);
         size_t expected = 0;
         for (uint32_t r = 0; r < boxes.size(); ++r) {
             const bool in = bits::test(row, r) && regions.squared_distance(r, eye) <= limit;
@@ -119,6 +121,53 @@ TEST(RegionBlocks, IntersectMaskEqualsEachBoxsAnswer)
                     ASSERT_EQ((mask >> i) & 1, i < count ? uint64_t(packed.intersects(first + i, planes)) : 0u);
             }
     }
+}
+
+// The clip-flag shortcut: a box holding boxes [first, first + count) is classified, and the boxes
+// are then tested against only the planes crossing it (and only the fours `wanted` names). Every
+// answer must still be the box's own, on boxes that touch the planes' margins too (the grid's
+// boxes share faces, and the frustums are random), with all six planes and the sides only. The
+// grid is in row order here (not shuffled), so a run of ids is a compact strip.
+TEST(RegionBlocks, CrossingPlanesOnlyGiveEachBoxsAnswer)
+{
+    std::mt19937 rng(17);
+    std::vector<Aabb> boxes;
+    for (int z = 0; z < 8; ++z)
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x)
+                boxes.push_back({glm::vec3(x, y, z) * 40.0f - 400.0f, glm::vec3(x + 1, y + 1, z + 1) * 40.0f - 400.0f});
+    const FrustumBoxes packed(boxes);
+    const float scale = 400.0f;
+    size_t shortcuts = 0, checked = 0;
+    for (int f = 0; f < 60; ++f) {
+        const Frustum frustum = random_frustum(rng, f % 2 ? 300.0f : 800.0f);
+        for (auto which : {FrustumBoxes::Planes::All, FrustumBoxes::Planes::SidesOnly}) {
+            const auto planes = FrustumBoxes::prepare(frustum, which, scale);
+            for (uint32_t first = 0; first + 16 <= boxes.size(); first += 8) {
+                const uint32_t count = first % 16 ? 8 : 16;
+                Aabb hull;
+                for (uint32_t i = first; i < first + count; ++i)
+                    hull.grow(boxes[i]);
+                const FrustumBoxes holder(std::vector<Aabb>{hull});
+                unsigned crossing = FrustumBoxes::all_planes(planes);
+                if (holder.classify(0, planes, crossing) == FrustumBoxes::Side::Outside)
+                    continue;
+                shortcuts += crossing != FrustumBoxes::all_planes(planes);
+                const uint64_t wanted = (uint64_t(rng()) << 32) | rng();
+                const uint64_t mask = packed.intersect_mask(first, count, planes, crossing, wanted);
+                for (uint32_t i = 0; i < count; ++i) {
+                    if ((wanted >> (i & ~3u)) & 15u) // its four is tested
+                        ASSERT_EQ((mask >> i) & 1, uint64_t(packed.intersects(first + i, planes)))
+                            << "box " << first + i << ", frustum " << f;
+                    else
+                        ASSERT_EQ((mask >> i) & 1, 0u);
+                    ++checked;
+                }
+            }
+        }
+    }
+    EXPECT_GT(shortcuts, 500u) << "few strips had a plane wholly in front: the shortcut went untested";
+    EXPECT_GT(checked, 10000u);
 }
 
 } // namespace

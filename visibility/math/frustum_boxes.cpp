@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <algorithm>
+#include <bit>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -51,10 +52,17 @@ FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes p
 
 FrustumBoxes::Side FrustumBoxes::classify(uint32_t box, const PlaneGroups& planes) const
 {
+    unsigned crossing = all_planes(planes);
+    return classify(box, planes, crossing);
+}
+
+FrustumBoxes::Side FrustumBoxes::classify(uint32_t box, const PlaneGroups& planes, unsigned& crossing) const
+{
     const PackedBox& b = boxes_[box];
-    bool inside = true;
-    for (int g = 0; g < planes.group_count; ++g)
-        for (int k = 0; k < 4; ++k) {
+    unsigned still = 0;
+    for (unsigned rest = crossing; rest != 0; rest &= rest - 1) {
+        const int p = std::countr_zero(rest), g = p / 4, k = p % 4;
+        {
             // Positive vertex (the box's farthest point along the normal) and negative vertex.
             const float far = b.max[0] * planes.pos_x[g][k] + b.min[0] * planes.neg_x[g][k] +
                               b.max[1] * planes.pos_y[g][k] + b.min[1] * planes.neg_y[g][k] +
@@ -64,9 +72,12 @@ FrustumBoxes::Side FrustumBoxes::classify(uint32_t box, const PlaneGroups& plane
             const float near = b.min[0] * planes.pos_x[g][k] + b.max[0] * planes.neg_x[g][k] +
                                b.min[1] * planes.pos_y[g][k] + b.max[1] * planes.neg_y[g][k] +
                                b.min[2] * planes.pos_z[g][k] + b.max[2] * planes.neg_z[g][k] - planes.dist[g][k];
-            inside = inside && near > planes.margin[g][k];
+            if (!(near > planes.margin[g][k]))
+                still |= 1u << p;
         }
-    return inside ? Side::Inside : Side::Partial;
+    }
+    crossing = still;
+    return still == 0 ? Side::Inside : Side::Partial;
 }
 
 #if defined(__SSE2__)
@@ -92,13 +103,13 @@ bool FrustumBoxes::intersects(uint32_t box, const PlaneGroups& planes) const
     return _mm_movemask_ps(outside) == 0;
 }
 
-unsigned FrustumBoxes::intersect_four(size_t at, const PlaneGroups& planes) const
+unsigned FrustumBoxes::intersect_four(size_t at, const PlaneGroups& planes, unsigned crossing) const
 {
     const __m128 lo_x = _mm_loadu_ps(&min_x_[at]), lo_y = _mm_loadu_ps(&min_y_[at]), lo_z = _mm_loadu_ps(&min_z_[at]);
     const __m128 hi_x = _mm_loadu_ps(&max_x_[at]), hi_y = _mm_loadu_ps(&max_y_[at]), hi_z = _mm_loadu_ps(&max_z_[at]);
     __m128 outside = _mm_setzero_ps();
-    for (int p = 0; p < planes.plane_count; ++p) {
-        const int g = p / 4, k = p % 4;
+    for (unsigned rest = crossing; rest != 0; rest &= rest - 1) {
+        const int p = std::countr_zero(rest), g = p / 4, k = p % 4;
         // intersects()'s sum, in the same order, for four boxes against plane p.
         __m128 d = _mm_add_ps(_mm_mul_ps(hi_x, _mm_set1_ps(planes.pos_x[g][k])),
                               _mm_mul_ps(lo_x, _mm_set1_ps(planes.neg_x[g][k])));
@@ -116,8 +127,9 @@ size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
 {
     const size_t n = boxes_.size();
     size_t kept = 0, i = 0;
+    const unsigned every_plane = all_planes(planes);
     for (; i + 4 <= n; i += 4) {
-        const unsigned inside = intersect_four(i, planes);
+        const unsigned inside = intersect_four(i, planes, every_plane);
         for (unsigned lane = 0; lane < 4; ++lane) { // branch-free append
             out[kept] = uint32_t(i + lane);
             kept += (inside >> lane) & 1u;
@@ -131,15 +143,17 @@ size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
 }
 
 
-uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const
+uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes, unsigned crossing,
+                                      uint64_t wanted) const
 {
     uint64_t mask = 0;
     uint32_t i = 0;
-    for (; i + 4 <= count; i += 4) {
-        mask |= uint64_t(intersect_four(size_t(first) + i, planes)) << i;
-    }
+    for (; i + 4 <= count; i += 4)
+        if ((wanted >> i) & 15u)
+            mask |= uint64_t(intersect_four(size_t(first) + i, planes, crossing)) << i;
     for (; i < count; ++i)
-        mask |= uint64_t(intersects(first + i, planes)) << i;
+        if ((wanted >> i) & 1u)
+            mask |= uint64_t(intersects(first + i, planes)) << i;
     return mask;
 }
 
@@ -172,14 +186,21 @@ size_t FrustumBoxes::collect_all(const PlaneGroups& planes, uint32_t* out) const
 }
 
 
-uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const
+uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes, unsigned,
+                                      uint64_t wanted) const
 {
     uint64_t mask = 0;
     for (uint32_t i = 0; i < count; ++i)
-        mask |= uint64_t(intersects(first + i, planes)) << i;
+        if ((wanted >> i) & 1u)
+            mask |= uint64_t(intersects(first + i, planes)) << i;
     return mask;
 }
 
 #endif
+
+uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const
+{
+    return intersect_mask(first, count, planes, all_planes(planes), ~uint64_t{0});
+}
 
 } // namespace pvs

@@ -56,6 +56,11 @@ public:
     // stage: one test for 64 regions.
     enum class Side : uint8_t { Outside, Inside, Partial };
     Side classify(uint32_t box, const PlaneGroups& planes) const;
+    // The same, testing only the planes of `crossing` (bit p: plane p; a box within a box wholly in
+    // front of a plane is wholly in front of it too, with the same margin) and leaving in it the
+    // planes whose boundary crosses the box (none when Inside): the planes its boxes must test.
+    Side classify(uint32_t box, const PlaneGroups& planes, unsigned& crossing) const;
+    static unsigned all_planes(const PlaneGroups& planes) { return (1u << planes.plane_count) - 1u; }
 
     // Same answer as frustum.intersects(box i) (or intersects_sides) for the prepared planes.
     bool intersects(uint32_t box, const PlaneGroups& planes) const;
@@ -67,8 +72,12 @@ public:
     size_t collect_all(const PlaneGroups& planes, uint32_t* out) const;
 
     // Boxes [first, first + count) (count <= 64): bit i of the result set when box first + i
-    // intersects, the same answers as intersects(), four boxes at a time (SoA).
+    // intersects, the same answers as intersects(), four boxes at a time (SoA). With
+    // `crossing` (classify's, for a box holding them all) only those planes are tested: the others
+    // pass every box; and only the fours with a bit in `wanted` are tested (the others' bits are 0).
     uint64_t intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const;
+    uint64_t intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes, unsigned crossing,
+                            uint64_t wanted) const;
 
     // The squared distance from `p` to the nearest point of box i (0 inside it): the culler's
     // distance stage reads the same packed boxes as its frustum stage.
@@ -101,7 +110,7 @@ public:
 private:
 #if defined(__SSE2__)
     // Bit i set when box at + i (i < 4) intersects: the SoA test collect_all and intersect_mask share.
-    unsigned intersect_four(size_t at, const PlaneGroups& planes) const;
+    unsigned intersect_four(size_t at, const PlaneGroups& planes, unsigned crossing) const;
 #endif
     struct alignas(32) PackedBox {
         float min[4];
