@@ -20,6 +20,17 @@ using irr::video::SColor;
 
 constexpr uint32_t kMaxBatchVertices = 65535;
 
+// The alpha a material is drawn with: Quake 2's 0.33 and 0.66 for its translucent surfaces,
+// opaque otherwise.
+constexpr uint8_t kTranslucentAlpha = 168, kFaintAlpha = 84; // SURF_TRANS66, SURF_TRANS33
+
+uint8_t translucent_alpha(const Material* material)
+{
+    if (!material || !(material->flags & kMaterialTranslucent))
+        return 255;
+    return material->flags & kMaterialFaint ? kFaintAlpha : kTranslucentAlpha;
+}
+
 // FNV-1a of a material name: the flat colour of a material without pixels.
 SColor flat_material_color(const std::string& name)
 {
@@ -48,13 +59,14 @@ template <typename Blend>
 irr::video::ITexture* make_texture(irr::video::IVideoDriver& driver, const Material& material, const std::string& name,
                                    Blend blend)
 {
+    const uint32_t alpha = translucent_alpha(&material); // 255 unless translucent: texels keep theirs
     const std::vector<uint8_t> rgba = material_rgba(material);
     if (material.width == 0 || material.height == 0 || rgba.size() != size_t(material.width) * material.height * 4)
         return nullptr;
     std::vector<uint32_t> argb(size_t(material.width) * material.height);
     for (size_t p = 0; p < argb.size(); ++p) {
         const uint8_t* px = &rgba[4 * p];
-        argb[p] = uint32_t(px[3]) << 24 | blend(uint32_t(px[0]) << 16 | uint32_t(px[1]) << 8 | px[2]);
+        argb[p] = (uint32_t(px[3]) * alpha / 255u) << 24 | blend(uint32_t(px[0]) << 16 | uint32_t(px[1]) << 8 | px[2]);
     }
     irr::video::IImage* image = driver.createImageFromData(
         irr::video::ECF_A8R8G8B8, irr::core::dimension2d<irr::u32>(material.width, material.height), argb.data(), false,
@@ -95,6 +107,9 @@ ZoneScene::~ZoneScene()
     for (irr::video::ITexture* texture : tinted_textures_)
         if (texture)
             driver_->removeTexture(texture);
+    for (irr::video::ITexture* texture : white_textures_)
+        if (texture)
+            driver_->removeTexture(texture);
 }
 
 bool ZoneScene::built_from(const Zone& zone) const
@@ -116,6 +131,17 @@ void ZoneScene::upload_textures()
         const std::string name = "pvscope/" + std::to_string(reinterpret_cast<uintptr_t>(this)) + "/" +
                                  std::to_string(m) + "/" + zone_->materials[m].name;
         textures_[m] = make_texture(*driver_, zone_->materials[m], name, [](uint32_t rgb) { return rgb; });
+    }
+    // Burning's Video (Irrlicht 1.8) blends "over" only by a texture's alpha channel (its vertex
+    // alpha mode adds, and untextured triangles take its opaque Gouraud path): translucent faces
+    // without pixels are drawn with a white texture of their alpha, tinted by the vertex colour.
+    for (int faint = 0; faint < 2; ++faint) {
+        Material white{"white", 2, 2, {}, kMaterialTranslucent | (faint ? kMaterialFaint : 0u)};
+        set_material_rgba(white, 2, 2, std::vector<uint8_t>(16, 255));
+        white_textures_[faint] =
+            make_texture(*driver_, white,
+                         "pvscope/" + std::to_string(reinterpret_cast<uintptr_t>(this)) + "/white" + std::to_string(faint),
+                         [](uint32_t rgb) { return rgb; });
     }
 }
 
@@ -173,6 +199,7 @@ void ZoneScene::build_faces()
             Batch& batch = batches_.emplace_back();
             batch.material = material_index;
             batch.texture = material ? textures_[material_index] : nullptr;
+            batch.alpha = translucent_alpha(material);
         }
         Batch& batch = batches_[batch_index];
 
@@ -301,8 +328,14 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
     material.ZWriteEnable = true;
     material.GouraudShading = true;
     const bool textured_mode = mode == RenderMode::Textured || mode == RenderMode::Flags;
+    // Translucent batches last, blended by their vertices' alpha over what is drawn and writing no
+    // depth, so everything behind them shows (as Quake 2 draws its SURF_TRANS33/66 surfaces).
+    const auto translucent = [&](const Batch& batch) { return batch.alpha < 255 && mode != RenderMode::IdBuffer; };
+    std::stable_partition(touched_.begin(), touched_.end(), [&](uint32_t b) { return !translucent(batches_[b]); });
     for (uint32_t b : touched_) {
         Batch& batch = batches_[b];
+        material.MaterialType = translucent(batch) ? irr::video::EMT_TRANSPARENT_ALPHA_CHANNEL : irr::video::EMT_SOLID;
+        material.ZWriteEnable = !translucent(batch);
         for (size_t list = 0; list < kTintSlots; ++list) {
             std::vector<uint16_t>& frame = batch.frame_indices[list];
             if (frame.empty())
@@ -313,6 +346,8 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
                 if (!texture) // the tinted copy could not be made: the plain texture, untinted
                     texture = batch.texture;
             }
+            if (!texture && translucent(batch))
+                texture = white_textures_[batch.alpha == kFaintAlpha ? 1 : 0];
             material.setTexture(0, texture);
             material.UseMipMaps = texture != nullptr;
             material.TextureLayer[0].BilinearFilter = false; // nearest texel, like Quake's own renderer

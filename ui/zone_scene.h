@@ -99,6 +99,7 @@ private:
     struct Batch {
         uint32_t material = 0;
         irr::video::ITexture* texture = nullptr; // null: the material has no pixels
+        uint8_t alpha = 255; // below 255: a translucent material (Quake 2 glass), drawn last and blended
         std::vector<irr::video::S3DVertex> vertices;
         std::vector<uint16_t> indices;       // every face's triangles, already in Irrlicht winding
         std::array<std::vector<uint16_t>, kTintSlots> frame_indices; // this frame's visible faces
@@ -121,6 +122,9 @@ private:
     std::vector<irr::video::ITexture*> textures_; // per material, or null
     // Per material x tint: the tinted copy, once made; tinted_made_ says it was tried.
     std::vector<irr::video::ITexture*> tinted_textures_;
+    // White textures of Quake 2's two translucent alphas (two thirds, a third), bound to translucent
+    // faces without pixels.
+    std::array<irr::video::ITexture*, 2> white_textures_{};
     std::vector<uint8_t> tinted_made_;
     std::vector<FaceSlot> faces_;
     std::vector<Batch> batches_;

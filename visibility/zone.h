@@ -110,6 +110,7 @@ enum MaterialFlag : uint32_t {
     kMaterialLiquid = 1u << 1,    // warping water/slime/lava/teleport surface
     kMaterialInvisible = 1u << 2, // not drawn (EverQuest transparent / trigger surfaces)
     kMaterialTranslucent = 1u << 3, // drawn, but hides nothing behind it (Quake 2 glass: SURF_TRANS33/66)
+    kMaterialFaint = 1u << 4,       // with kMaterialTranslucent: a third opaque (SURF_TRANS33), else two thirds
 };
 
 struct Material {

@@ -183,6 +183,59 @@ protected:
     std::map<uint32_t, std::vector<std::pair<uint32_t, uint32_t>>> interior_;
 };
 
+// ---- Translucent faces (Quake 2 glass) -------------------------------------------------------------
+
+// A pane in front of the flagged wall (x = 5, facing the camera), listed by region 1: with a
+// translucent material (two thirds opaque, SURF_TRANS66) each of its pixels is the blend of its
+// own colour (the pane drawn opaque) and the wall behind it (the picture without the pane), at
+// Quake 2's alpha; in the ID picture it stays opaque (one face a pixel).
+TEST(TranslucentFaces, BlendOverWhatIsBehindThem)
+{
+    Zone without = flagged_wall();
+    Zone opaque = without;
+    {
+        Mesh& mesh = opaque.mesh;
+        const auto base = uint32_t(mesh.positions.size());
+        const glm::vec3 a{5, 2, -2}, b{5, -2, -2}, c{5, -2, 2}, d{5, 2, 2};
+        for (const glm::vec3& p : {a, b, c, d}) {
+            mesh.positions.push_back(p);
+            mesh.uvs.push_back({0.0f, 0.0f});
+        }
+        opaque.materials.push_back({"glass", 0, 0, {}, 0});
+        mesh.faces.push_back({uint32_t(mesh.triangle_count()), 2, uint32_t(opaque.materials.size() - 1)});
+        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+            mesh.indices.push_back(base + i);
+        opaque.region_faces.insert(opaque.region_faces.begin() + opaque.region_face_offsets[2], 6u);
+        ++opaque.region_face_offsets[2];
+        ++opaque.region_face_offsets[3];
+    }
+    Zone glass = opaque;
+    glass.materials.back().flags = kMaterialTranslucent;
+    SoftwareRenderer renderer{160, 120};
+    const std::vector<uint32_t> all{0, 1, 2};
+    const Image behind = renderer.render(without, wall_camera(), all, RenderMode::Textured);
+    const Image pane = renderer.render(opaque, wall_camera(), all, RenderMode::Textured);
+    const Image blended = renderer.render(glass, wall_camera(), all, RenderMode::Textured);
+    const Image opaque_ids = renderer.render(opaque, wall_camera(), all, RenderMode::IdBuffer);
+    const Image glass_ids = renderer.render(glass, wall_camera(), all, RenderMode::IdBuffer);
+    EXPECT_EQ(opaque_ids.rgba, glass_ids.rgba) << "the ID picture keeps the pane opaque";
+    const auto pixels = interior_pixels(opaque_ids)[6];
+    ASSERT_GE(pixels.size(), 100u);
+    const float alpha = 168.0f / 255.0f;
+    size_t differ = 0;
+    for (const auto& [x, y] : pixels) {
+        const Rgb p = rgb_of(pane, x, y), w = rgb_of(behind, x, y), got = rgb_of(blended, x, y);
+        const Rgb want{int(std::lround(alpha * float(p.r) + (1 - alpha) * float(w.r))),
+                       int(std::lround(alpha * float(p.g) + (1 - alpha) * float(w.g))),
+                       int(std::lround(alpha * float(p.b) + (1 - alpha) * float(w.b)))};
+        ASSERT_NEAR(got.r, want.r, 3) << "at " << x << "," << y; // Burning blends in fixed point
+        ASSERT_NEAR(got.g, want.g, 3) << "at " << x << "," << y;
+        ASSERT_NEAR(got.b, want.b, 3) << "at " << x << "," << y;
+        differ += std::abs(p.r - w.r) + std::abs(p.g - w.g) + std::abs(p.b - w.b) > 30;
+    }
+    EXPECT_GT(differ, pixels.size() / 2) << "the pane and the wall must differ for the blend to show";
+}
+
 TEST_F(FlagsOnAWall, UnflaggedRegionsPixelsAreExactlyTheTexturedOnes)
 {
     EXPECT_EQ(renderer_.last_stats().faces_drawn, 6u);

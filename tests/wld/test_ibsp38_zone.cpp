@@ -194,6 +194,9 @@ TEST(Quake2ZoneRules, UnvisedMapLoadsWithoutAPvsAndNamesItsSurfaces)
     for (const Material& m : zone.materials) {
         warp |= (m.flags & kMaterialLiquid) != 0;
         translucent |= (m.flags & kMaterialTranslucent) != 0;
+        if (m.flags & kMaterialFaint) { // SURF_TRANS33: a kind of translucent surface
+            EXPECT_TRUE(m.flags & kMaterialTranslucent) << m.name;
+        }
         EXPECT_TRUE(m.has_pixels()) << m.name << ": a flat colour stands in for the .wal";
     }
     EXPECT_TRUE(warp) << "SURF_WARP liquids";

@@ -226,7 +226,8 @@ std::vector<uint32_t> read_materials(const Q2& q, Zone& zone)
                                size_t(std::find(raw.begin(), raw.end(), uint8_t(0)) - raw.begin()));
         const uint32_t flags = (surface & kSurfSky ? kMaterialSky : 0u) | (surface & kSurfWarp ? kMaterialLiquid : 0u) |
                                (surface & kSurfNodraw ? kMaterialInvisible : 0u) |
-                               (surface & (kSurfTrans33 | kSurfTrans66) ? kMaterialTranslucent : 0u);
+                               (surface & (kSurfTrans33 | kSurfTrans66) ? kMaterialTranslucent : 0u) |
+                               (surface & kSurfTrans33 ? kMaterialFaint : 0u); // Quake 2 draws it at 0.33
         const auto [it, fresh] = known.try_emplace({name, flags}, uint32_t(zone.materials.size()));
         if (fresh) {
             Material m;

@@ -22,7 +22,7 @@
 //    repeats of a 64-unit texture (the .wal files with the sizes are not in the map). Materials
 //    are one per (texture name, surface kind): a flat colour made from the name (no pixels ship
 //    in the map), kMaterialSky for SURF_SKY, kMaterialLiquid for SURF_WARP, kMaterialInvisible
-//    for SURF_NODRAW, kMaterialTranslucent for SURF_TRANS33 / SURF_TRANS66 (glass and water
+//    for SURF_NODRAW, kMaterialTranslucent for SURF_TRANS33 / SURF_TRANS66 (+ kMaterialFaint for TRANS33) (glass and water
 //    surfaces: drawn, but they hide nothing behind them).
 //  - Region face lists come from the leaf-face lump; faces of brush models are dropped.
 //  - trigger_changelevel entities become zone lines (wld/quake/changelevel_lines.h).
