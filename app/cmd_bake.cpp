@@ -380,16 +380,6 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
     return j;
 }
 
-void write_report(const std::string& path, const nlohmann::json& report)
-{
-    const std::string text = report.dump(2) + "\n";
-    if (path == "-") {
-        std::fputs(text.c_str(), stdout);
-        return;
-    }
-    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
-}
-
 void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err)
 {
     const auto start = std::chrono::steady_clock::now();
@@ -622,6 +612,16 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
 }
 
 } // namespace
+
+void write_report(const std::string& path, const nlohmann::json& report)
+{
+    const std::string text = report.dump(2) + "\n";
+    if (path == "-") {
+        std::fputs(text.c_str(), stdout);
+        return;
+    }
+    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
+}
 
 int run_bake(const BakeOptions& options, std::FILE* err, const std::atomic<bool>* cancel)
 {

@@ -3,6 +3,8 @@
 #include "app/arguments.h"
 #include "app/cli_validators.h"
 #include "app/cmd_bake.h"
+#include "app/process_memory.h"
+#include "app/progress_bar.h"
 #include "app/sigint_scope.h"
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
@@ -14,6 +16,7 @@
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <filesystem>
@@ -114,6 +117,29 @@ void write_in_place(const std::string& map, const std::vector<uint8_t>& bytes)
     replace_map(temporary, map);
 }
 
+// --report for a Quake 2 map: what was written and the flow's figures (nulls with --phs-only).
+nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map, const quake2::Quake2VisResult& r)
+{
+    const VisReport& v = r.report;
+    const auto baked = [&](auto value) { return o.phs_only ? nlohmann::json(nullptr) : nlohmann::json(value); };
+    return {{"input", map},
+            {"output", map},
+            {"format", "Quake 2 (IBSP 38)"},
+            {"method", o.phs_only ? "phs-only" : (o.fast ? "portal-fast" : o.method)},
+            {"level", baked(o.level)},
+            {"threads", baked(v.threads)},
+            {"portal_source", baked(fs::path(map).replace_extension(".prt").string())},
+            {"portals", baked(v.portals)},
+            {"portals_skipped", baked(v.portals_skipped)},
+            {"clusters", r.clusters},
+            {"mean_visible", r.mean_visible},
+            {"mean_hearable", r.mean_hearable},
+            {"phs_rule", o.phs_rule},
+            {"time_seconds", baked(v.seconds)},
+            {"base_seconds", baked(v.base_seconds)},
+            {"peak_rss_bytes", peak_rss_bytes()}};
+}
+
 int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
                const std::atomic<bool>* cancel)
 {
@@ -126,7 +152,14 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
     q.vis.method = o.fast || o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
     q.vis.level = o.level;
     q.vis.threads = o.threads;
-    q.vis.progress = [cancel](double) { return !(cancel && cancel->load()); };
+    std::optional<ProgressBar> bar;
+    if (!o.phs_only)
+        bar.emplace(err, "vis");
+    q.vis.progress = [&](double fraction) {
+        if (bar)
+            bar->update(fraction);
+        return !(cancel && cancel->load());
+    };
     q.phs = o.phs_rule == "ericw" ? quake2::PhsRule::EricwTools : quake2::PhsRule::Quake2;
     q.phs_only = o.phs_only;
     std::optional<quake::PrtFile> prt;
@@ -139,6 +172,8 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
         prt = quake::load_prt(prt_path);
     }
     const quake2::Quake2VisResult r = quake2::vis_quake2_map(bytes, map, prt ? &*prt : nullptr, prt_path, q);
+    if (bar)
+        bar->finish(r.cancelled ? "cancelled" : "done");
     if (r.cancelled) {
         std::fprintf(err, "pvscope: vis cancelled: %s left as it was\n", map.c_str());
         return kExitCancelled;
@@ -148,6 +183,8 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
                  r.clusters, o.phs_only ? "PVS kept" : "PVS baked", r.mean_visible, r.mean_hearable,
                  q.phs == quake2::PhsRule::Quake2 ? "Quake 2's" : "ericw-tools'",
                  o.phs_only ? "" : (", " + std::to_string(r.report.seconds) + " s").c_str());
+    if (!o.report.empty())
+        write_report(o.report, quake2_report(o, map, r));
     return 0;
 }
 

@@ -15,11 +15,13 @@
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <bit>
 #include <filesystem>
+#include <fstream>
 
 namespace pvs::test {
 namespace {
@@ -223,6 +225,36 @@ TEST_F(VisCommand, Quake2MapsGetPvsAndPhsOverClusters)
         }
         expect_other_lumps_kept(before, in, after, out, name);
     }
+}
+
+// --report on a Quake 2 map: the clusters and portals of the files (qbsp's .prt header, ericw's
+// map), the mean of the rows written, counted here.
+TEST_F(VisCommand, Quake2ReportNamesWhatWasWritten)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_tjunc_matrix.bsp");
+    const std::string base = "modern-quake/q2/q2_tjunc_matrix";
+    const std::string map = copy({(base + ".bsp").c_str(), (base + ".prt").c_str()});
+    ASSERT_FALSE(map.empty());
+    const std::string report = path("report.json");
+    ASSERT_EQ(vis_cli({"vis", "-threads", "2", "--report", report, path("q2_tjunc_matrix")}), 0);
+    const std::vector<uint8_t> text = read_bytes(report);
+    const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end());
+    const quake2::Ibsp38File out = quake2::read_ibsp38(read_bytes(map), map);
+    uint64_t bits = 0;
+    for (uint64_t w : out.pvs_rows)
+        bits += uint64_t(std::popcount(w));
+    std::ifstream prt(*find_shared_data(base + ".prt"));
+    std::string magic;
+    uint64_t clusters = 0, portals = 0;
+    prt >> magic >> clusters >> portals;
+    EXPECT_EQ(magic, "PRT1");
+    EXPECT_EQ(j.at("format"), "Quake 2 (IBSP 38)");
+    EXPECT_EQ(j.at("clusters"), out.clusters);
+    EXPECT_EQ(j.at("clusters").get<uint64_t>(), clusters);
+    EXPECT_EQ(j.at("portals").get<uint64_t>(), portals);
+    EXPECT_DOUBLE_EQ(j.at("mean_visible").get<double>(), double(bits) / out.clusters);
+    EXPECT_GT(j.at("time_seconds").get<double>(), 0.0);
+    EXPECT_EQ(j.at("threads"), 2);
 }
 
 // `bake` on a Quake 2 map: portals from the tree per leaf (Quake 2's content rule), the leaves'
