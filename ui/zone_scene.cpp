@@ -135,7 +135,9 @@ void ZoneScene::upload_textures()
     // Burning's Video (Irrlicht 1.8) blends "over" only by a texture's alpha channel (its vertex
     // alpha mode adds, and untextured triangles take its opaque Gouraud path): translucent faces
     // without pixels are drawn with a white texture of their alpha, tinted by the vertex colour.
-    for (int faint = 0; faint < 2; ++faint) {
+    const bool any_translucent = std::any_of(zone_->materials.begin(), zone_->materials.end(),
+                                             [](const Material& m) { return translucent_alpha(&m) < 255; });
+    for (int faint = 0; faint < 2 && any_translucent; ++faint) {
         Material white{"white", 2, 2, {}, kMaterialTranslucent | (faint ? kMaterialFaint : 0u)};
         set_material_rgba(white, 2, 2, std::vector<uint8_t>(16, 255));
         white_textures_[faint] =
@@ -328,7 +330,7 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
     material.ZWriteEnable = true;
     material.GouraudShading = true;
     const bool textured_mode = mode == RenderMode::Textured || mode == RenderMode::Flags;
-    // Translucent batches last, blended by their vertices' alpha over what is drawn and writing no
+    // Translucent batches last, blended by their textures' alpha over what is drawn and writing no
     // depth, so everything behind them shows (as Quake 2 draws its SURF_TRANS33/66 surfaces).
     const auto translucent = [&](const Batch& batch) { return batch.alpha < 255 && mode != RenderMode::IdBuffer; };
     std::stable_partition(touched_.begin(), touched_.end(), [&](uint32_t b) { return !translucent(batches_[b]); });

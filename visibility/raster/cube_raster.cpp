@@ -29,37 +29,41 @@ CubeRaster::CubeRaster(const Zone& zone, const CubeRasterOptions& options)
     : resolution_(std::max(options.resolution, 1u)), cull_back_faces_(options.cull_back_faces),
       near_(options.near_distance > 0.0f ? options.near_distance : 0.05f)
 {
-    const Mesh& mesh = zone.mesh;
     const std::vector<uint8_t> translucent = translucent_face_mask(zone);
     const auto is_translucent = [&](uint32_t f) { return !translucent.empty() && translucent[f] != 0; };
     // The opaque faces' triangles first, then the translucent ones: render() draws them last.
-    for (uint32_t f = 0; f < 2 * mesh.faces.size(); ++f) {
-        if (f == mesh.faces.size())
-            first_translucent_ = triangle_face_.size();
-        if (is_translucent(f % uint32_t(mesh.faces.size())) != (f >= mesh.faces.size()))
-            continue;
-        const Face& face = mesh.faces[f % mesh.faces.size()];
-        for (uint32_t t = face.first_triangle; t < face.first_triangle + face.triangle_count; ++t) {
-            if (3 * size_t(t) + 2 >= mesh.indices.size())
-                break;
-            glm::vec3 p[3];
-            bool ok = true;
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t i = mesh.indices[3 * size_t(t) + size_t(k)];
-                ok = ok && i < mesh.positions.size();
-                p[k] = ok ? mesh.positions[i] : glm::vec3(0.0f);
-            }
-            if (!ok)
-                continue;
-            corners_.insert(corners_.end(), {p[0], p[1], p[2]});
-            triangle_face_.push_back(f % uint32_t(mesh.faces.size()));
-            triangle_normal_.push_back(glm::cross(p[1] - p[0], p[2] - p[0]));
-        }
-    }
-    first_translucent_ = std::min(first_translucent_, triangle_face_.size());
+    for (uint32_t f = 0; f < zone.mesh.faces.size(); ++f)
+        if (!is_translucent(f))
+            add_face(zone.mesh, f);
+    first_translucent_ = triangle_face_.size();
+    for (uint32_t f = 0; f < zone.mesh.faces.size(); ++f)
+        if (is_translucent(f))
+            add_face(zone.mesh, f);
     const size_t pixels = size_t(resolution_) * resolution_;
     depth_.assign(6 * pixels, 0.0f);
     id_.assign(6 * pixels, 0);
+}
+
+// Appends the face's triangles (those whose indices are in range).
+void CubeRaster::add_face(const Mesh& mesh, uint32_t f)
+{
+    const Face& face = mesh.faces[f];
+    for (uint32_t t = face.first_triangle; t < face.first_triangle + face.triangle_count; ++t) {
+        if (3 * size_t(t) + 2 >= mesh.indices.size())
+            break;
+        glm::vec3 p[3];
+        bool ok = true;
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t i = mesh.indices[3 * size_t(t) + size_t(k)];
+            ok = ok && i < mesh.positions.size();
+            p[k] = ok ? mesh.positions[i] : glm::vec3(0.0f);
+        }
+        if (!ok)
+            continue;
+        corners_.insert(corners_.end(), {p[0], p[1], p[2]});
+        triangle_face_.push_back(f);
+        triangle_normal_.push_back(glm::cross(p[1] - p[0], p[2] - p[0]));
+    }
 }
 
 void CubeRaster::render(const glm::vec3& eye, std::vector<uint8_t>& seen)

@@ -40,6 +40,7 @@ private:
     struct Vertex {
         float u, v, inv_w; // screen position in pixels, 1 / depth
     };
+    void add_face(const Mesh& mesh, uint32_t f);
     void draw(int view, const glm::vec3 (&d)[3], uint32_t face);
     void fill(int view, const Vertex& a, const Vertex& b, const Vertex& c, uint32_t face);
 
@@ -49,7 +50,7 @@ private:
     uint32_t resolution_;
     bool cull_back_faces_;
     float near_;
-    size_t first_translucent_ = SIZE_MAX; // triangles from here on are translucent (drawn last)
+    size_t first_translucent_ = 0; // triangles from here on are translucent (drawn last)
     bool translucent_pass_ = false;
     std::vector<uint8_t>* seen_ = nullptr; // render()'s output, for the translucent pass
     std::vector<float> depth_;  // 6 * resolution^2: 1/w of the nearest fragment (0 = empty)
