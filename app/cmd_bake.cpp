@@ -27,6 +27,7 @@
 #include "wld/quake/prt_file.h"
 #include "wld/quake2/ibsp38_file.h"
 #include "wld/quake2/ibsp38_zone.h"
+#include "wld/quake2/quake2_vis.h"
 #include "wld/zone_file.h"
 
 // The whole CLI11 (not only App.hpp): its config and formatter classes are header-only, and a
@@ -214,15 +215,40 @@ void drop_what_a_portal_bake_does_not_read(Input& in)
     return_freed_memory();
 }
 
-// --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
-// the zone's regions. A PRT2 / PRT1-AM file's portals name its clusters.
-quake::PrtFile load_prt_for_zone(const std::string& prt_path, const Zone& zone, const std::string& zone_path)
+// A Quake 2 map's PRT1 names the map's clusters, not its leaves (qbsp -q2bsp writes it over
+// them): read as a cluster portal file, each region in its leaf's cluster, so the bake is the
+// flow over the clusters that `pvscope vis` runs.
+quake::PrtFile as_quake2_cluster_portals(quake::PrtFile prt, const std::string& prt_path, const Zone& zone,
+                                         const std::string& zone_path)
 {
-    quake::PrtFile prt = quake::load_prt(prt_path);
-    if (prt.leaf_count != zone.region_count())
+    if (prt.has_clusters())
+        throw FileError(prt_path, 0, "a Quake 2 map's portal file is PRT1 over its clusters, not PRT2 / PRT1-AM");
+    quake2::RegionClusterMap map = quake2::region_clusters(read_whole_file(zone_path), zone_path, zone);
+    if (prt.leaf_count != map.clusters)
         throw FileError(prt_path, 0,
                         "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
-                            std::to_string(zone.region_count()) +
+                            std::to_string(map.clusters) +
+                            " clusters (a Quake 2 portal file's leaves are the map's clusters: a portal file of "
+                            "another map?)");
+    prt.version = quake::PrtVersion::Prt2;
+    prt.cluster_count = map.clusters;
+    prt.cluster_of_leaf.assign(map.cluster_of_region.begin(), map.cluster_of_region.end());
+    prt.leaf_count = uint32_t(zone.region_count());
+    return prt;
+}
+
+// --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
+// the zone's regions. A PRT2 / PRT1-AM file's portals name its clusters, as a Quake 2 map's
+// PRT1 does.
+quake::PrtFile load_prt_for_zone(const std::string& prt_path, const Input& in, const std::string& zone_path)
+{
+    quake::PrtFile prt = quake::load_prt(prt_path);
+    if (in.format == InputFormat::Quake2Bsp)
+        return as_quake2_cluster_portals(std::move(prt), prt_path, in.zone, zone_path);
+    if (prt.leaf_count != in.zone.region_count())
+        throw FileError(prt_path, 0,
+                        "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
+                            std::to_string(in.zone.region_count()) +
                             " regions (PRT leaf k must be region k: a portal file of another map?)");
     return prt;
 }
@@ -380,11 +406,12 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
     return j;
 }
 
-void find_portals(const BakeOptions& o, const Zone& zone, BakeRun& run, std::FILE* err)
+void find_portals(const BakeOptions& o, const Input& in, BakeRun& run, std::FILE* err)
 {
+    const Zone& zone = in.zone;
     const auto start = std::chrono::steady_clock::now();
     if (!o.prt_in.empty()) {
-        quake::PrtFile prt = load_prt_for_zone(o.prt_in, zone, o.input);
+        quake::PrtFile prt = load_prt_for_zone(o.prt_in, in, o.input);
         run.portals = std::move(prt.portals);
         run.portal_source = o.prt_in;
         if (prt.has_clusters()) {
@@ -592,7 +619,7 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
         return run_registry_method(o, in, load_seconds, err, cancel);
     drop_what_a_portal_bake_does_not_read(in);
     BakeRun run;
-    find_portals(o, in.zone, run, err);
+    find_portals(o, in, run, err);
     choose_clusters(o, in, run, err);
     if (!bake(o, in.zone, run, err, cancel)) {
         std::fprintf(err, "pvscope: bake cancelled: nothing was written\n");

@@ -292,6 +292,35 @@ TEST_F(VisCommand, Quake2BakeFromTheTreeWithinEricwsRows)
     }
 }
 
+// `bake --prt` on a Quake 2 map: the PRT1 names the map's clusters, not its leaves, so the bake
+// runs over the clusters (each leaf in its own) and writes the file `pvscope vis` writes in place,
+// byte for byte - one path expands cluster rows to leaves and ORs them back, the other writes the
+// cluster rows. Another map's portal file is refused and nothing is written.
+TEST_F(VisCommand, Quake2BakeWithThePortalFileWritesWhatVisWrites)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_liquids.bsp");
+    for (const char* name : {"q2_areaportals", "q2_liquids", "q2_tjunc_matrix"}) {
+        const std::string base = std::string("modern-quake/q2/") + name;
+        const std::string map = copy({(base + ".bsp").c_str(), (base + ".prt").c_str()});
+        ASSERT_FALSE(map.empty());
+        app::BakeOptions options;
+        options.input = map;
+        options.prt_in = path(std::string(name) + ".prt");
+        options.output = path(std::string(name) + ".baked.bsp");
+        options.threads = 2;
+        ASSERT_EQ(run(options), 0) << name;
+        ASSERT_EQ(vis_cli({"vis", "-threads", "2", map}), 0) << name;
+        EXPECT_EQ(read_bytes(options.output), read_bytes(map)) << name;
+    }
+    const std::string map = copy({"modern-quake/q2/q2_liquids.bsp", "modern-quake/q2/q2_areaportals.prt"});
+    app::BakeOptions options;
+    options.input = map;
+    options.prt_in = path("q2_areaportals.prt");
+    options.output = path("wrong.bsp");
+    EXPECT_EQ(run(options), 1) << "8 portal-file leaves for 18 clusters";
+    EXPECT_FALSE(fs::exists(options.output));
+}
+
 // -phsonly with ericw's rule on ericw's own output: the PVS kept, the PHS ericw's byte for byte
 // (decoded rows and their stored lengths); with Quake 2's rule the PHS holds ericw's.
 TEST_F(VisCommand, Quake2PhsOnlyRebuildsEricwsPhs)

@@ -24,6 +24,22 @@ double mean_bits(std::span<const uint64_t> rows, uint32_t clusters)
     return clusters ? double(bits::count(rows)) / double(clusters) : 0.0;
 }
 
+RegionClusterMap region_clusters(const Ibsp38File& parsed, const std::string& file, const Zone& zone)
+{
+    if (zone.tree.leaf_region.size() != parsed.leaves.size())
+        throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "the map's leaves are not those of the zone given");
+    RegionClusterMap result;
+    result.clusters = leaf_clusters(parsed);
+    result.cluster_of_region.assign(zone.region_count(), -1);
+    for (size_t leaf = 0; leaf < parsed.leaves.size(); ++leaf)
+        if (const int32_t r = zone.tree.leaf_region[leaf]; r >= 0 && size_t(r) < zone.region_count())
+            result.cluster_of_region[size_t(r)] = parsed.leaves[leaf].cluster;
+    for (uint32_t r = 0; r < zone.region_count(); ++r) // every region's cluster, before any row uses it
+        if (const int32_t c = result.cluster_of_region[r]; c < 0 || uint32_t(c) >= result.clusters)
+            throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "region " + std::to_string(r) + " has no cluster");
+    return result;
+}
+
 } // namespace
 
 Quake2VisResult vis_quake2_map(std::span<const uint8_t> map, const std::string& file, const quake::PrtFile* prt,
@@ -73,16 +89,9 @@ Quake2ZonePvsResult write_quake2_zone_pvs(std::span<const uint8_t> map, const st
     if (pvs.region_count() != zone.region_count())
         throw std::invalid_argument("a PVS of " + std::to_string(pvs.region_count()) + " regions for a zone of " +
                                     std::to_string(zone.region_count()));
-    if (zone.tree.leaf_region.size() != parsed.leaves.size())
-        throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "the map's leaves are not those of the zone given");
-    const uint32_t clusters = leaf_clusters(parsed);
-    std::vector<int32_t> cluster_of(zone.region_count(), -1);
-    for (size_t leaf = 0; leaf < parsed.leaves.size(); ++leaf)
-        if (const int32_t r = zone.tree.leaf_region[leaf]; r >= 0 && size_t(r) < cluster_of.size())
-            cluster_of[size_t(r)] = parsed.leaves[leaf].cluster;
-    for (uint32_t r = 0; r < zone.region_count(); ++r) // every region's cluster, before any row uses it
-        if (cluster_of[r] < 0 || uint32_t(cluster_of[r]) >= clusters)
-            throw FileError(file, parsed.lumps[kQ2LumpLeafs].offset, "region " + std::to_string(r) + " has no cluster");
+    const RegionClusterMap map_clusters = region_clusters(parsed, file, zone);
+    const uint32_t clusters = map_clusters.clusters;
+    const std::vector<int32_t>& cluster_of = map_clusters.cluster_of_region;
     const size_t words = bits::words_for(clusters);
     std::vector<uint64_t> rows(size_t(clusters) * words, 0);
     for (uint32_t c = 0; c < clusters; ++c)
@@ -103,6 +112,11 @@ Quake2ZonePvsResult write_quake2_zone_pvs(std::span<const uint8_t> map, const st
     result.mean_visible = mean_bits(rows, clusters);
     result.mean_hearable = mean_bits(hearable, clusters);
     return result;
+}
+
+RegionClusterMap region_clusters(std::span<const uint8_t> map, const std::string& file, const Zone& zone)
+{
+    return region_clusters(read_ibsp38(map, file), file, zone);
 }
 
 } // namespace pvs::quake2

@@ -55,4 +55,14 @@ struct Quake2ZonePvsResult {
 Quake2ZonePvsResult write_quake2_zone_pvs(std::span<const uint8_t> map, const std::string& file, const Zone& zone,
                                           const Pvs& pvs, PhsRule phs = PhsRule::Quake2);
 
+// The cluster of each region of `zone` (the map loaded with load_ibsp38), from the map's leaves,
+// and the map's cluster count: what a Quake 2 portal file (PRT1 over clusters) needs to be baked
+// as clusters of the zone's leaves. Throws FileError when a region has no cluster or the map's
+// leaves are not the zone's.
+struct RegionClusterMap {
+    std::vector<int32_t> cluster_of_region;
+    uint32_t clusters = 0;
+};
+RegionClusterMap region_clusters(std::span<const uint8_t> map, const std::string& file, const Zone& zone);
+
 } // namespace pvs::quake2
