@@ -15,6 +15,12 @@
 // zone's face-to-region lists failed there (Quake's marksurfaces), not the PVS. Every popping
 // pixel is checked; the check is a walk down the tree, about a microsecond.
 //
+// Translucent faces (Quake 2 glass, translucent water) hide nothing: in a zone that has any, each
+// camera also gets the ID picture without them, and the face seen through a translucent one is
+// measured as the face in front is (needed, may pop, its sight line checked); a pixel pops once,
+// by the face in front when that was not drawn, else by the face behind. Behind several
+// translucent layers only the first opaque face is measured.
+//
 // Several PVSs can be measured over the same cameras in one pass (run_accuracy_walks): each
 // camera's ID buffer is rendered once and each pixel's sight line traced at most once, whatever
 // the number of PVSs (pvscope compare measures every method this way).

@@ -229,6 +229,18 @@ void SoftwareRenderer::forget_zone() { impl_->scene.reset(); }
 Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std::vector<uint32_t>& visible_regions,
                                RenderMode mode, std::span<const uint32_t> region_tints)
 {
+    return draw_frame(zone, camera, visible_regions, mode, region_tints, false);
+}
+
+Image SoftwareRenderer::render_ids_behind_translucent(const Zone& zone, const Camera& camera,
+                                                      const std::vector<uint32_t>& visible_regions)
+{
+    return draw_frame(zone, camera, visible_regions, RenderMode::IdBuffer, {}, true);
+}
+
+Image SoftwareRenderer::draw_frame(const Zone& zone, const Camera& camera, const std::vector<uint32_t>& visible_regions,
+                                   RenderMode mode, std::span<const uint32_t> region_tints, bool opaque_only)
+{
     Impl& s = *impl_;
     if (mode == RenderMode::IdBuffer && zone.mesh.faces.size() > kMaxIdFaces)
         throw std::runtime_error("the ID buffer encodes at most " + std::to_string(kMaxIdFaces) +
@@ -265,7 +277,7 @@ Image SoftwareRenderer::render(const Zone& zone, const Camera& camera, const std
     s.driver->setTransform(irr::video::ETS_PROJECTION, projection);
     s.driver->setTransform(irr::video::ETS_VIEW, view);
     s.driver->setTransform(irr::video::ETS_WORLD, irr::core::matrix4()); // identity (not Irrlicht's exported IdentityMatrix)
-    const ZoneScene::DrawStats drawn = s.scene->draw(visible_regions, mode, region_tints);
+    const ZoneScene::DrawStats drawn = s.scene->draw(visible_regions, mode, region_tints, opaque_only);
     s.driver->setRenderTarget(nullptr, false, false);
 
     Image image;

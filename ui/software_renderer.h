@@ -189,10 +189,17 @@ public:
     // them, in place of the mode's own tints (Textured and Flags modes).
     Image render(const Zone& zone, const Camera& camera, const std::vector<uint32_t>& visible_regions,
                  RenderMode mode, std::span<const uint32_t> region_tints = {});
+    // The IdBuffer picture without the translucent faces (kMaterialTranslucent: Quake 2 glass
+    // and translucent water): where render(..., IdBuffer) shows such a face, the face seen
+    // through it (behind every translucent layer). The accuracy walk measures those faces too.
+    Image render_ids_behind_translucent(const Zone& zone, const Camera& camera,
+                                        const std::vector<uint32_t>& visible_regions);
     void forget_zone();
     const RenderStats& last_stats() const;
 
 private:
+    Image draw_frame(const Zone& zone, const Camera& camera, const std::vector<uint32_t>& visible_regions,
+                     RenderMode mode, std::span<const uint32_t> region_tints, bool opaque_only);
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

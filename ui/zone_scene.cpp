@@ -267,7 +267,7 @@ uint32_t ZoneScene::next_stamp()
 }
 
 ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_regions, RenderMode mode,
-                                     std::span<const uint32_t> region_tints)
+                                     std::span<const uint32_t> region_tints, bool opaque_only)
 {
     DrawStats stats;
     const uint32_t stamp = next_stamp();
@@ -290,6 +290,8 @@ ZoneScene::DrawStats ZoneScene::draw(const std::vector<uint32_t>& visible_region
             if (slot.batch == kNoBatch)
                 continue;
             Batch& batch = batches_[slot.batch];
+            if (opaque_only && batch.alpha < 255)
+                continue;
             SColor colour = slot.textured_color;
             size_t list = 0;
             if (mode == RenderMode::RegionColors)

@@ -78,8 +78,9 @@ public:
     // current render target and transforms (world = identity). In IdBuffer mode the zone must
     // have at most kMaxIdFaces faces (the caller checks).
     // region_tints: one tint palette index (or kNoTint) per region, replacing Flags mode's.
+    // opaque_only: translucent faces are left out (what shows through them).
     DrawStats draw(const std::vector<uint32_t>& visible_regions, RenderMode mode,
-                   std::span<const uint32_t> region_tints = {});
+                   std::span<const uint32_t> region_tints = {}, bool opaque_only = false);
 
     uint32_t skipped_faces() const { return skipped_faces_; }
     uint32_t batch_count() const { return uint32_t(batches_.size()); }

@@ -9,6 +9,8 @@
 //   confirmed popping.
 //   Open: the same planes with the slab open (region 1 spans x > 0), no wall faces: 0 sees 1.
 //   With the bit 0 -> 1 removed from a full PVS, the far wall pops, confirmed, in region 1.
+//   Glass: Open with a pane in region 0 (x = -10) in front of the camera. Translucent, it hides
+//   nothing: the far wall pops behind it as around it; opaque, only around it.
 #include "ui/accuracy_walk.h"
 
 #include "visibility/bit_row.h"
@@ -126,6 +128,45 @@ TEST(ExactPopping, ARemovedBitPopsConfirmedWithItsRegion)
     EXPECT_EQ(rows[0].popping_confirmed + rows[0].popping_cracks + rows[0].popping_unknown + rows[0].popping_grazing +
                   rows[0].popping_unlisted,
               rows[0].accuracy.popping_pixels);
+}
+
+// A pane in region 0 at x = -10, facing the camera, covering the middle of the view.
+Zone open_with_a_pane(bool translucent)
+{
+    Zone zone = two_rooms(false);
+    zone.materials.push_back(Material{"glass", 0, 0, {}, translucent ? kMaterialTranslucent : 0u});
+    const uint32_t pane = uint32_t(zone.mesh.faces.size());
+    add_quad(zone, {-10, 10, -10}, {-10, -10, -10}, {-10, -10, 10}, {-10, 10, 10});
+    zone.mesh.faces.back().material = uint32_t(zone.materials.size() - 1);
+    zone.region_faces.insert(zone.region_faces.begin() + zone.region_face_offsets[1], pane);
+    ++zone.region_face_offsets[1];
+    ++zone.region_face_offsets[2];
+    return zone;
+}
+
+TEST(ExactPopping, AFaceSeenThroughGlassPopsAsAnyOther)
+{
+    const std::vector<Camera> cameras{camera_facing_the_wall()};
+    const Pvs removed = pvs_of({{0}, {0, 1}}); // 0 does not see 1
+    // The far wall's pixels with nothing in front of it: an independent count of what must pop.
+    const Zone open = two_rooms(false);
+    const uint64_t far_wall = run_accuracy_walk(open, &removed, cameras, options_640x480())[0].popping_confirmed;
+    ASSERT_GT(far_wall, 50000u);
+
+    const Zone glass = open_with_a_pane(true);
+    const std::vector<WalkRow> through = run_accuracy_walk(glass, &removed, cameras, options_640x480());
+    EXPECT_EQ(through[0].popping_confirmed, far_wall) << "the far wall pops behind the glass too";
+    EXPECT_EQ(through[0].accuracy.popping_pixels, far_wall);
+    EXPECT_EQ(through[0].confirmed_regions, std::vector<uint32_t>{1});
+    EXPECT_EQ(through[0].accuracy.needed_regions, 2u) << "the pane's region and the wall's behind it";
+
+    const Zone pane = open_with_a_pane(false);
+    const std::vector<WalkRow> opaque = run_accuracy_walk(pane, &removed, cameras, options_640x480());
+    EXPECT_LT(opaque[0].popping_confirmed, far_wall - 10000) << "an opaque pane hides a part of the wall";
+    EXPECT_GT(opaque[0].popping_confirmed, 0u);
+
+    const Pvs full = pvs_of({{0, 1}, {0, 1}});
+    EXPECT_EQ(run_accuracy_walk(glass, &full, cameras, options_640x480())[0].accuracy.popping_pixels, 0u);
 }
 
 } // namespace

@@ -22,7 +22,8 @@ FaceRegions build_face_regions(const Zone& zone)
 }
 
 ImageAccuracy measure_image_accuracy(const Zone& zone, const FaceRegions& face_regions,
-                                     std::span<const int32_t> face_ids, std::span<const uint32_t> drawn_regions)
+                                     std::span<const int32_t> face_ids, std::span<const uint32_t> drawn_regions,
+                                     std::span<const int32_t> behind_translucent)
 {
     ImageAccuracy a;
     a.pixels = face_ids.size();
@@ -38,15 +39,24 @@ ImageAccuracy measure_image_accuracy(const Zone& zone, const FaceRegions& face_r
             face_drawn[f] = 1;
 
     std::vector<uint8_t> face_needed(faces, 0), face_popped(faces, 0);
-    for (const int32_t id : face_ids) {
+    // Whether a face shown at a pixel pops (and marks it needed, popped).
+    const auto pops = [&](int32_t id) {
+        if (id < 0 || size_t(id) >= faces)
+            return false;
+        face_needed[size_t(id)] = 1;
+        if (face_drawn[size_t(id)])
+            return false;
+        face_popped[size_t(id)] = 1;
+        return true;
+    };
+    for (size_t pixel = 0; pixel < face_ids.size(); ++pixel) {
+        const int32_t id = face_ids[pixel];
         if (id < 0 || size_t(id) >= faces)
             continue;
         ++a.covered_pixels;
-        face_needed[size_t(id)] = 1;
-        if (!face_drawn[size_t(id)]) {
-            ++a.popping_pixels;
-            face_popped[size_t(id)] = 1;
-        }
+        const bool front_pops = pops(id);
+        const bool behind_pops = pixel < behind_translucent.size() && pops(behind_translucent[pixel]);
+        a.popping_pixels += front_pops || behind_pops;
     }
 
     std::vector<uint8_t> region_needed(zone.region_count(), 0), region_popping(zone.region_count(), 0);

@@ -48,7 +48,11 @@ struct ImageAccuracy {
 
 // `face_ids`: one entry per pixel, the face id or -1. `drawn_regions`: the culler's output,
 // ascending. Face ids out of range count as background (they cannot come from this zone).
+// `behind_translucent`: empty, or one entry per pixel: the face seen through the translucent
+// face the pixel shows (Quake 2 glass hides nothing), else -1. Such a face is needed too, and
+// a pixel pops when any face it shows was not drawn (counted once).
 ImageAccuracy measure_image_accuracy(const Zone& zone, const FaceRegions& face_regions,
-                                     std::span<const int32_t> face_ids, std::span<const uint32_t> drawn_regions);
+                                     std::span<const int32_t> face_ids, std::span<const uint32_t> drawn_regions,
+                                     std::span<const int32_t> behind_translucent = {});
 
 } // namespace pvs
