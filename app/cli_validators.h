@@ -5,6 +5,8 @@
 #include "app/arguments.h"
 
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <optional>
 #include <string>
 
 namespace pvs::app {
@@ -28,6 +30,46 @@ inline CLI::Validator size_validator()
                                              : "expects WIDTHxHEIGHT with each 1..8192, e.g. 800x600, got '" + text + "'";
         },
         "WxH");
+}
+
+// The whole text as a finite number, else nothing (CLI11's Range and NonNegativeNumber let NaN
+// through, as every comparison with it is false, and take "inf").
+inline std::optional<double> finite_number(const std::string& text)
+{
+    try {
+        size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (used == text.size() && std::isfinite(value))
+            return value;
+    } catch (const std::exception&) {
+    }
+    return std::nullopt;
+}
+
+// --fov of render, walk and the inspector: degrees in [1, 179].
+inline CLI::Validator fov_validator()
+{
+    return CLI::Validator(
+        [](std::string& text) {
+            const std::optional<double> v = finite_number(text);
+            return v && *v >= 1.0 && *v <= 179.0 ? std::string()
+                                                 : "expects degrees from 1 to 179, got '" + text + "'";
+        },
+        "FLOAT in [1 - 179]");
+}
+
+// Distances (--far, --step): a finite number, 0 or more (or more than 0 when `positive`).
+inline CLI::Validator distance_validator(bool positive)
+{
+    return CLI::Validator(
+        [positive](std::string& text) {
+            const std::optional<double> v = finite_number(text);
+            const bool ok = v && (positive ? *v > 0.0 : *v >= 0.0);
+            return ok ? std::string()
+                      : std::string("expects a finite number ") + (positive ? "above 0" : "of 0 or more") + ", got '" +
+                            text + "'";
+        },
+        positive ? "FLOAT > 0" : "FLOAT >= 0");
 }
 
 // --threads of every command: 0 (all cores) to kMaxThreads. The workers are capped again at the

@@ -64,10 +64,14 @@ struct Input {
     Input(InputFormat f, Zone z) : format(f), zone(std::move(z)) {}
 };
 
-const char* format_name(InputFormat f)
+// A Quake map's name says its variant (BSP 29, BSP2, 2PSB), as `info` does.
+std::string format_name(const Input& in)
 {
-    return f == InputFormat::QuakeBsp    ? "Quake BSP 29"
-           : f == InputFormat::Quake2Bsp ? "Quake 2 BSP (IBSP 38)"
+    const InputFormat f = in.format;
+    if (f == InputFormat::QuakeBsp)
+        return in.zone.source.version == "29" || in.zone.source.version.empty() ? "Quake BSP 29"
+                                                                                 : "Quake " + in.zone.source.version;
+    return f == InputFormat::Quake2Bsp ? "Quake 2 BSP (IBSP 38)"
            : f == InputFormat::EqS3d     ? "EverQuest S3D"
            : f == InputFormat::DoomWad ? "Doom WAD + GL nodes"
                                        : "OBJ + .hepvs";
@@ -123,6 +127,8 @@ std::string check_options(const BakeOptions& o)
         return "--step and --cell must be 0 or more and --grid-size more than 0";
     if (uses_registry(o) && !o.prt_in.empty())
         return "--prt: " + o.method + " does not read portals (it builds what it needs from the tree)";
+    if (uses_registry(o) && !o.prt_out.empty())
+        return "--write-prt: " + o.method + " uses no portals to write (portal-fast and portal-full do)";
     if (uses_registry(o) && o.clusters != "none")
         return "--clusters: only for portal-fast and portal-full (clustered always bakes over clusters)";
     if (o.level < 0 || o.level > 4)
@@ -215,21 +221,12 @@ void drop_what_a_portal_bake_does_not_read(Input& in)
     return_freed_memory();
 }
 
-// A Quake 2 map's PRT1 names the map's clusters, not its leaves (qbsp -q2bsp writes it over
-// them): read as a cluster portal file, each region in its leaf's cluster, so the bake is the
-// flow over the clusters that `pvscope vis` runs.
-quake::PrtFile as_quake2_cluster_portals(quake::PrtFile prt, const std::string& prt_path, const Zone& zone,
-                                         const std::string& zone_path)
+// A Quake 2 map's PRT1 from qbsp names the map's clusters, not its leaves (qbsp -q2bsp writes it
+// over them): read as a cluster portal file, each region in its leaf's cluster, so the bake is
+// the flow over the clusters that `pvscope vis` runs.
+quake::PrtFile as_quake2_cluster_portals(quake::PrtFile prt, const quake2::RegionClusterMap& map,
+                                         const Zone& zone)
 {
-    if (prt.has_clusters())
-        throw FileError(prt_path, 0, "a Quake 2 map's portal file is PRT1 over its clusters, not PRT2 / PRT1-AM");
-    quake2::RegionClusterMap map = quake2::region_clusters(read_whole_file(zone_path), zone_path, zone);
-    if (prt.leaf_count != map.clusters)
-        throw FileError(prt_path, 0,
-                        "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
-                            std::to_string(map.clusters) +
-                            " clusters (a Quake 2 portal file's leaves are the map's clusters: a portal file of "
-                            "another map?)");
     prt.version = quake::PrtVersion::Prt2;
     prt.cluster_count = map.clusters;
     prt.cluster_of_leaf.assign(map.cluster_of_region.begin(), map.cluster_of_region.end());
@@ -238,13 +235,22 @@ quake::PrtFile as_quake2_cluster_portals(quake::PrtFile prt, const std::string& 
 }
 
 // --prt: PRT leaf k is region k (for a Quake map, BSP leaf k+1), so the file must name exactly
-// the zone's regions. A PRT2 / PRT1-AM file's portals name its clusters, as a Quake 2 map's
-// PRT1 does.
+// the zone's regions; a PRT2 / PRT1-AM file's portals name its clusters. A Quake 2 map's PRT1
+// names either its clusters (qbsp's) or its regions (what --write-prt writes of a bake per leaf).
 quake::PrtFile load_prt_for_zone(const std::string& prt_path, const Input& in, const std::string& zone_path)
 {
     quake::PrtFile prt = quake::load_prt(prt_path);
-    if (in.format == InputFormat::Quake2Bsp)
-        return as_quake2_cluster_portals(std::move(prt), prt_path, in.zone, zone_path);
+    if (in.format == InputFormat::Quake2Bsp && !prt.has_clusters()) {
+        const quake2::RegionClusterMap map = quake2::region_clusters(read_whole_file(zone_path), zone_path, in.zone);
+        if (prt.leaf_count == map.clusters)
+            return as_quake2_cluster_portals(std::move(prt), map, in.zone);
+        if (prt.leaf_count != in.zone.region_count())
+            throw FileError(prt_path, 0,
+                            "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path +
+                                " has " + std::to_string(map.clusters) + " clusters and " +
+                                std::to_string(in.zone.region_count()) +
+                                " regions (a Quake 2 portal file names one or the other: a portal file of another map?)");
+    }
     if (prt.leaf_count != in.zone.region_count())
         throw FileError(prt_path, 0,
                         "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
@@ -295,6 +301,7 @@ struct BakeRun {
     Pvs pvs;
     VisReport report;
     ClusterReport cluster_report;
+    size_t edits_applied = 0; // --apply-edits
 };
 
 // A Doom map's PVS as GL_PVS: into -o (a copy of the GL file: the .gwa, or the WAD holding the
@@ -324,21 +331,25 @@ void write_doom_output(const BakeOptions& o, const Input& in, const Pvs& pvs, st
                  pvs.region_count(), o.reject ? " and REJECT rebuilt from it" : "");
 }
 
-// The bake with --apply-edits' list applied (a copy), or the bake itself.
-const Pvs& with_edits(const BakeOptions& o, const Pvs& pvs, Pvs& edited, std::FILE* err)
+// --apply-edits: the list applied to the bake in place, before anything is written or reported
+// (the summary and the report give what is written). Returns the number of edits, 0 without.
+size_t apply_edit_list(const BakeOptions& o, Pvs& pvs, std::FILE* err)
 {
     if (o.apply_edits.empty())
-        return pvs;
+        return 0;
     const std::vector<PvsEdit> edits = read_edit_list(o.apply_edits, pvs.row_count(), pvs.region_count());
-    edited = apply_edits(pvs, edits);
+    pvs = apply_edits(pvs, edits);
     std::fprintf(err, "applied %zu edits from %s\n", edits.size(), o.apply_edits.c_str());
-    return edited;
+    return edits.size();
 }
 
-void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::FILE* err)
+double mean_visible_of(const Pvs& pvs)
 {
-    Pvs edited;
-    const Pvs& pvs = with_edits(o, baked, edited, err);
+    return pvs_gap(&pvs, pvs).mean_visible; // set bits per row
+}
+
+void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FILE* err)
+{
     if (in.format == InputFormat::DoomWad) {
         write_doom_output(o, in, pvs, err);
         return;
@@ -359,7 +370,11 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& baked, std::
         write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output, write_options);
     for (const std::string& note : written.notes)
         std::fprintf(err, "note: %s\n", note.c_str());
-    std::fprintf(err, "%s\n", written.summary.c_str());
+    std::string summary = written.summary;
+    if (!o.output_name.empty())
+        if (const size_t at = summary.find(o.output); at != std::string::npos)
+            summary.replace(at, o.output.size(), o.output_name);
+    std::fprintf(err, "%s\n", summary.c_str());
 }
 
 nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun& run, double load_seconds,
@@ -368,8 +383,8 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
     const VisReport& r = run.report;
     const uint32_t regions = run.pvs.region_count();
     nlohmann::json j = {{"input", o.input},
-                        {"output", o.output},
-                        {"format", format_name(in.format)},
+                        {"output", o.output_name.empty() ? o.output : o.output_name},
+                        {"format", format_name(in)},
                         {"method", o.method},
                         {"level", o.method == "portal-full" ? nlohmann::json(o.level) : nlohmann::json(nullptr)},
                         {"threads", r.threads},
@@ -392,7 +407,8 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                         {"mean_visible", r.mean_visible},
                         {"mean_visible_percent", regions ? 100.0 * r.mean_visible / regions : 0.0},
                         {"saw_into_own_region", r.saw_into_own_region},
-                        {"leaf_recursions", r.leaf_recursions}};
+                        {"leaf_recursions", r.leaf_recursions},
+                        {"edits_applied", run.edits_applied}};
     if (run.portal_stats)
         j["leaks"] = {{"leaves_touching_world", run.portal_stats->leaves_touching_world.size()},
                       {"leaves_touching_outside", run.portal_stats->leaves_touching_outside.size()}};
@@ -545,16 +561,17 @@ int run_registry_method(const BakeOptions& o, const Input& in, double load_secon
         std::fprintf(err, "pvscope: bake cancelled: nothing was written\n");
         return kExitCancelled;
     }
+    const size_t edits = apply_edit_list(o, pvs, err);
     const auto write_start = std::chrono::steady_clock::now();
     write_output(o, in, pvs, err);
     const double write_seconds = seconds_since(write_start);
-    std::fprintf(err, "%s\n", run.summary.c_str());
+    std::fprintf(err, "%s%s\n", run.summary.c_str(), edits ? " (before the edits)" : "");
     if (!o.report.empty()) {
         const VisMethod& m = *find_vis_method(o.method);
         const uint32_t regions = pvs.region_count();
-        const uint64_t bits = pvs_gap(&pvs, pvs).bits;
-        nlohmann::json j = {{"input", o.input},           {"output", o.output},
-                            {"format", format_name(in.format)}, {"method", o.method},
+        nlohmann::json j = {{"input", o.input},
+                            {"output", o.output_name.empty() ? o.output : o.output_name},
+                            {"format", format_name(in)}, {"method", o.method},
                             {"params", m.label(method_settings(o))},
                             {"bound", bound_name(m.bound)},
                             {"summary", run.summary},     {"regions", regions},
@@ -562,7 +579,8 @@ int run_registry_method(const BakeOptions& o, const Input& in, double load_secon
                             {"write_seconds", write_seconds},
                             {"peak_memory_estimate_bytes", run.peak_bytes_estimate},
                             {"peak_rss_bytes", peak_rss_bytes()},
-                            {"mean_visible", regions ? double(bits) / regions : 0.0}};
+                            {"mean_visible", mean_visible_of(pvs)},
+                            {"edits_applied", edits}};
         j["file_pvs"] = in.zone.baked_pvs ? compare_with_file(pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
         write_report(o.report, j);
     }
@@ -611,7 +629,12 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
         std::fprintf(err,
                      "pvscope: error: '%s' is in the %s format and bake writes its PVS in the same format, so the output "
                      "must end in %s, not '%s' (to change the format, run `pvscope convert` on the result)\n",
-                     o.input.c_str(), format_name(in.format), format_extension(in).c_str(), o.output.c_str());
+                     o.input.c_str(), format_name(in).c_str(), format_extension(in).c_str(), o.output.c_str());
+        return kExitBadArguments;
+    }
+    if (in.format == InputFormat::DoomWad && (!o.prt_in.empty() || !o.prt_out.empty())) {
+        std::fprintf(err, "pvscope: error: --prt / --write-prt: a Doom map's portals are its GL nodes' segs, not a "
+                          "portal file\n");
         return kExitBadArguments;
     }
     // A Doom map goes through the registry, which picks the 2-D baker (or the 3-D one, --heights).
@@ -625,6 +648,8 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
         std::fprintf(err, "pvscope: bake cancelled: nothing was written\n");
         return kExitCancelled;
     }
+    if ((run.edits_applied = apply_edit_list(o, run.pvs, err)) > 0)
+        run.report.mean_visible = mean_visible_of(run.pvs);
     const auto write_start = std::chrono::steady_clock::now();
     write_output(o, in, run.pvs, err);
     if (!o.prt_out.empty())

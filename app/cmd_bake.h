@@ -43,6 +43,7 @@ namespace pvs::app {
 struct BakeOptions {
     std::string input;
     std::string output;
+    std::string output_name; // how messages and the report name the output when not `output` (vis: the map it replaces)
     std::string method = "portal-full"; // portal-fast | portal-full
     int level = 4;                      // portal-full's separator test level, 0..4
     unsigned threads = 0;               // 0 = all cores

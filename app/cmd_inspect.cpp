@@ -66,7 +66,7 @@ void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(c
         ->check(CLI::IsMember({"none", "frustum", "pvs", "pvs+frustum"}));
     cmd->add_option("--far", o->far, "Far clip distance at start, zone units (EverQuest clips at the zone's far plane / fog distance): the view camera's far plane and the culler's distance stage. 0: none")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(distance_validator(false));
     cmd->add_flag("--report-fps", o->report_fps,
                   "Draw --frames frames without vsync, print the frame times (mean, median, p95, fps) and exit");
     cmd->add_option("--overlays", o->overlays,

@@ -135,10 +135,10 @@ void register_render_command(CLI::App& app, int& exit_code)
         ->check(camera_validator());
     cmd->add_option("--fov", options->fov, "Vertical field of view in degrees")
         ->capture_default_str()
-        ->check(CLI::Range(1.0f, 179.0f));
+        ->check(fov_validator());
     cmd->add_option("--far", options->far, "Far clip distance in zone units (EverQuest clips at the zone's far plane / fog distance): the culling camera's far plane (with --cull-camera the picture's camera does not clip) and a distance stage in the culler that drops regions beyond its reach. 0: none")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(distance_validator(false));
     cmd->add_option("--size", options->size, "Image size WIDTHxHEIGHT (1..8192 each)")
         ->capture_default_str()
         ->check(size_validator());

@@ -150,7 +150,7 @@ int run_checked(const StabilityCommandOptions& o, std::FILE* out, std::FILE* err
     for (const std::string& name : options.methods)
         if (const VisMethod* m = find_vis_method(name); !m || !m->bakes) {
             std::fprintf(err, "pvscope: error: --methods: '%s' is not a method that bakes (%s)\n", name.c_str(),
-                         vis_method_names().c_str());
+                         baking_method_names().c_str());
             return kExitBadArguments;
         }
     options.reference_samples = o.samples;
@@ -206,7 +206,7 @@ void register_stability_command(CLI::App& app, int& exit_code)
         case_list += (case_list.empty() ? "" : ", ") + std::string(name);
     cmd->add_option("--cases", o->cases, "Instead of a file: 'all' or comma-separated crafted cases with a known "
                                          "truth (" + case_list + "); missing and excess bits per method and case");
-    cmd->add_option("--methods", o->methods, "Comma-separated methods that bake (" + vis_method_names() +
+    cmd->add_option("--methods", o->methods, "Comma-separated methods that bake (" + baking_method_names() +
                                              "; default: portal-fast, portal-full, clustered, reference, and raster "
                                              "with --cases)");
     cmd->add_option("--samples", o->samples, "Reference: sight lines per region (the untransformed zone's reference "

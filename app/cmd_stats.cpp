@@ -4,6 +4,7 @@
 #include "report/region_report.h"
 #include "report/zone_batch.h"
 #include "report/zone_report.h"
+#include "visibility/file_error.h"
 #include "visibility/zone_stats.h"
 #include "wld/common/read_file.h"
 
@@ -109,12 +110,17 @@ int run_stats(const StatsOptions& o, std::FILE* out, std::FILE* err)
             for (const RegionRow& row : region_rows(*loaded.zone))
                 region_fields_all.push_back(region_row_fields(item, *loaded.zone, row));
     }
-    if (!o.csv.empty())
-        write_text(o.csv, csv_table(zone_fields), out);
-    if (!o.json.empty())
-        write_text(o.json, nlohmann::json(rows).dump(2) + "\n", out);
-    if (!o.regions_csv.empty())
-        write_text(o.regions_csv, csv_table(region_fields_all), out);
+    try {
+        if (!o.csv.empty())
+            write_text(o.csv, csv_table(zone_fields), out);
+        if (!o.json.empty())
+            write_text(o.json, nlohmann::json(rows).dump(2) + "\n", out);
+        if (!o.regions_csv.empty())
+            write_text(o.regions_csv, csv_table(region_fields_all), out);
+    } catch (const FileError& e) {
+        std::fprintf(err, "pvscope: error: %s\n", e.what());
+        return 1;
+    }
     if (o.csv != "-" && o.json != "-" && o.regions_csv != "-")
         print_summary(rows, out);
     std::fprintf(err, "stats: %zu zones, %zu loaded, %zu failed\n", items.size(), items.size() - failed, failed);

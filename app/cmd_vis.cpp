@@ -10,6 +10,7 @@
 #include "wld/common/read_file.h"
 #include "wld/quake/ambient_sounds.h"
 #include "wld/quake/bsp29_reader.h"
+#include "wld/quake/bsp_layout.h"
 #include "wld/quake/prt_file.h"
 #include "wld/quake2/ibsp38_file.h"
 #include "wld/quake2/quake2_vis.h"
@@ -200,8 +201,16 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
         std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
         return 1;
     }
-    if (quake2::looks_like_ibsp38(read_file_head(map, 8)))
+    const std::vector<uint8_t> head = read_file_head(map, 8);
+    if (quake2::looks_like_ibsp38(head))
         return quake2_vis(o, map, read_whole_file(map), err, cancel);
+    if (!quake::detect_bsp_variant(head)) {
+        const std::string header = quake::describe_bsp_header(head);
+        std::fprintf(err, "pvscope: error: %s: offset 0: not a Quake map (%s): vis writes Quake BSP 29, BSP2, 2PSB and "
+                          "Quake 2 IBSP 38 maps; `pvscope bake` writes the other formats\n",
+                     map.c_str(), header.starts_with("version ") ? "no BSP header" : header.c_str());
+        return 1;
+    }
     if (o.phs_only) {
         std::fprintf(err, "pvscope: error: --phs-only is for Quake 2 maps (IBSP 38); %s is not one\n", map.c_str());
         return 2;
@@ -227,6 +236,7 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
     }
     const std::string temporary = temporary_beside(map);
     b.output = temporary;
+    b.output_name = map;
     const int code = run_bake(b, err, cancel);
     if (code != 0) {
         std::error_code ec;

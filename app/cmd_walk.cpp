@@ -266,7 +266,7 @@ void register_walk_command(CLI::App& app, int& exit_code)
                     "continuous walk through the portal graph (--step units apart, at most --cameras), or a file "
                     "of x,y,z,yaw,pitch lines (replaces the random cameras)");
     cmd->add_option("--step", o->step, "--path portals: units between cameras")
-        ->check(CLI::PositiveNumber)
+        ->check(distance_validator(true))
         ->capture_default_str();
     cmd->add_option("--region-cache", o->region_cache,
                     "Baseline: cull from a stale camera->region cache walked again only after the camera moved "
@@ -280,10 +280,10 @@ void register_walk_command(CLI::App& app, int& exit_code)
         ->check(CLI::IsMember(pvs_source_names()))
         ->capture_default_str();
     cmd->add_option("--size", o->size, "ID-buffer size WIDTHxHEIGHT")->capture_default_str()->check(size_validator());
-    cmd->add_option("--fov", o->fov, "Vertical field of view in degrees")->capture_default_str();
+    cmd->add_option("--fov", o->fov, "Vertical field of view in degrees")->capture_default_str()->check(fov_validator());
     cmd->add_option("--far", o->far, "Far clip distance in zone units (EverQuest clips at the zone's far plane / fog distance): the camera's far plane and a distance stage in the culler that drops regions beyond its reach. 0: none")
         ->capture_default_str()
-        ->check(CLI::NonNegativeNumber);
+        ->check(distance_validator(false));
     cmd->add_option("--csv", o->csv, "Write one row per camera to this CSV file");
     cmd->add_flag("--render-time", o->render_time, "Also time a textured render of each culled frame");
     cmd->callback([o, &exit_code] { exit_code = run_walk(*o); });

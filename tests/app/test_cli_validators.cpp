@@ -1,4 +1,4 @@
-// The shared --camera and --size validators: CLI11 refuses a bad value before the command runs,
+// The shared --camera, --size, --fov and distance validators: CLI11 refuses a bad value before the command runs,
 // with a message naming what was expected and what was given; good values pass unchanged.
 #include "app/cli_validators.h"
 
@@ -65,6 +65,24 @@ TEST(CliValidators, ThreadCountsInRangeOnly)
     EXPECT_EQ(parse_threads("1024"), "");
     EXPECT_NE(parse_threads("1025"), "");
     EXPECT_NE(parse_threads("1000000").find("not in range"), std::string::npos) << parse_threads("1000000");
+}
+
+// --fov, --far and --step: NaN, infinities and text are refused (CLI11's own Range and
+// NonNegativeNumber let NaN through: every comparison with it is false), as are values out of range.
+TEST(CliValidators, FovAndDistancesMustBeFiniteAndInRange)
+{
+    const auto refused = [](const CLI::Validator& v, std::string text) { return !v(text).empty(); };
+    for (const char* bad : {"nan", "NaN", "inf", "-inf", "0", "0.5", "179.5", "500", "-10", "70x", "", "seventy"})
+        EXPECT_TRUE(refused(fov_validator(), bad)) << "--fov " << bad;
+    for (const char* good : {"1", "70", "90.5", "179"})
+        EXPECT_FALSE(refused(fov_validator(), good)) << "--fov " << good;
+    for (const char* bad : {"nan", "inf", "1e999", "-1", "-0.5", "far"})
+        EXPECT_TRUE(refused(distance_validator(false), bad)) << "--far " << bad;
+    for (const char* good : {"0", "1024", "2.5e3"})
+        EXPECT_FALSE(refused(distance_validator(false), good)) << "--far " << good;
+    EXPECT_TRUE(refused(distance_validator(true), "0")) << "--step 0";
+    EXPECT_TRUE(refused(distance_validator(true), "nan")) << "--step nan";
+    EXPECT_FALSE(refused(distance_validator(true), "4")) << "--step 4";
 }
 
 } // namespace

@@ -380,6 +380,17 @@ TEST_F(BakeCommand, ApplyEditsAfterTheBake)
             if (!(r == 0 && (c == seen || c == unseen)))
                 other_differences += edited.baked_pvs->visible(r, c) != plain.baked_pvs->visible(r, c);
     EXPECT_EQ(other_differences, 0u);
+    // The summary and the report give what was written, not the bake before the edits.
+    o.report = path("edited.json");
+    o.output = path("edited-again.s3d");
+    ASSERT_EQ(run(o), 0) << err_;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(o.report));
+    EXPECT_EQ(report["edits_applied"], 2);
+    size_t bits = 0;
+    for (uint32_t r = 0; r < n; ++r)
+        for (uint32_t c = 0; c < n; ++c)
+            bits += edited.baked_pvs->visible(r, c);
+    EXPECT_DOUBLE_EQ(report["mean_visible"].get<double>(), double(bits) / n);
 }
 
 } // namespace

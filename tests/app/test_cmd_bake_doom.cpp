@@ -4,7 +4,7 @@
 //    with --gwa as the same rows; the input files are untouched;
 //  - --in-place: GL_PVS inserted into the WAD holding the GL nodes, with glVIS's .~wa backup
 //    equal to the original, and --reject rebuilding REJECT (ceil(n^2 / 8) bytes);
-//  - misuse: an output of the wrong kind, --reject where REJECT is in another file.
+//  - misuse: an output of the wrong kind, --reject where REJECT is in another file, a portal file.
 #include "app/cmd_bake.h"
 
 #include "tests/app/bake_command_fixture.h"
@@ -56,6 +56,12 @@ TEST_F(BakeDoom, GwaOutputRoundTripsThroughLoadZone)
     o.reject = true;
     EXPECT_EQ(run(o), 2);
     EXPECT_NE(err_.find("--in-place"), std::string::npos) << err_;
+    // Portal files are not a Doom map's portals: refused, not silently ignored.
+    o.reject = false;
+    o.prt_out = path("map01.prt");
+    EXPECT_EQ(run(o), 2);
+    EXPECT_FALSE(std::filesystem::exists(o.prt_out));
+    EXPECT_FALSE(std::filesystem::exists(o.output));
 }
 
 TEST_F(BakeDoom, InPlaceInsertsGlPvsKeepsABackupAndRebuildsReject)

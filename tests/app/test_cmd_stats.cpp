@@ -99,5 +99,29 @@ TEST(StatsCommand, NoInputIsABadArgument)
     std::fclose(err);
 }
 
+// An output that cannot be created is an error (exit 1, the reason on stderr), not an abort.
+TEST(StatsCommand, AnOutputThatCannotBeMadeIsAnError)
+{
+    const fs::path dir = fs::temp_directory_path() / ("pvscope-stats-out-" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    write_whole_file((dir / "broken.s3d").string(), {'n', 'o', 'p', 'e'});
+    for (const char* which : {"csv", "json", "regions-csv"}) {
+        app::StatsOptions o;
+        o.inputs = {(dir / "broken.s3d").string()};
+        const std::string missing = (dir / "no-such-folder" / "out").string();
+        (which == std::string("csv") ? o.csv : which == std::string("json") ? o.json : o.regions_csv) = missing;
+        std::FILE* out = std::tmpfile();
+        std::FILE* err = std::tmpfile();
+        EXPECT_EQ(app::run_stats(o, out, err), 1) << which;
+        std::rewind(err);
+        std::string said(4096, '\0');
+        said.resize(std::fread(said.data(), 1, said.size(), err));
+        EXPECT_NE(said.find("no-such-folder/out"), std::string::npos) << which << ": " << said;
+        std::fclose(out);
+        std::fclose(err);
+    }
+    fs::remove_all(dir);
+}
+
 } // namespace
 } // namespace pvs::test

@@ -181,12 +181,17 @@ TEST_F(VisCommand, Bsp2StaysBsp2)
     SHARED_DATA_OR_SKIP(source, "modern-quake/q1/lqdm2-bsp2.bsp");
     const std::string map = copy({"modern-quake/q1/lqdm2-bsp2.bsp", "modern-quake/q1/lqdm2-bsp2.prt"});
     ASSERT_FALSE(map.empty());
-    ASSERT_EQ(vis_cli({"vis", "-threads", "2", map}), 0);
+    const std::string report = path("report.json");
+    ASSERT_EQ(vis_cli({"vis", "-threads", "2", "--report", report, map}), 0);
     const std::vector<uint8_t> bytes = read_bytes(map);
     EXPECT_EQ(std::string(bytes.begin(), bytes.begin() + 4), "BSP2");
     const Zone zone = load_zone(map);
     ASSERT_TRUE(zone.baked_pvs.has_value());
     EXPECT_EQ(zone.source.version, "BSP2");
+    // The report names the variant and the map written, not the temporary file beside it.
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(report));
+    EXPECT_EQ(j["format"], "Quake BSP2");
+    EXPECT_EQ(j["output"], map);
 }
 
 // Quake 2: the unvised maps vised from their .prt beside them get ericw's cluster counts and a PVS
@@ -319,6 +324,18 @@ TEST_F(VisCommand, Quake2BakeWithThePortalFileWritesWhatVisWrites)
     options.output = path("wrong.bsp");
     EXPECT_EQ(run(options), 1) << "8 portal-file leaves for 18 clusters";
     EXPECT_FALSE(fs::exists(options.output));
+    // What --write-prt writes of a bake per leaf (PRT1 over the map's leaves) reads back per leaf.
+    app::BakeOptions per_leaf;
+    per_leaf.input = map;
+    per_leaf.output = path("per-leaf.bsp");
+    per_leaf.prt_out = path("per-leaf.prt");
+    per_leaf.threads = 2;
+    ASSERT_EQ(run(per_leaf), 0) << err_;
+    per_leaf.prt_in = per_leaf.prt_out;
+    per_leaf.prt_out.clear();
+    per_leaf.output = path("per-leaf-again.bsp");
+    ASSERT_EQ(run(per_leaf), 0) << err_;
+    EXPECT_EQ(read_bytes(per_leaf.output), read_bytes(path("per-leaf.bsp")));
 }
 
 // -phsonly with ericw's rule on ericw's own output: the PVS kept, the PHS ericw's byte for byte
@@ -343,6 +360,19 @@ TEST_F(VisCommand, Quake2PhsOnlyRebuildsEricwsPhs)
         added += std::popcount(quake2_rule.phs_rows[w] & ~ericw.phs_rows[w]);
     }
     EXPECT_GT(added, 0u) << "96 clusters: the bits ericw's word loop leaves out";
+}
+
+// vis on a map that is not a Quake map (an EverQuest zone, whatever its extension): a clear error
+// naming the map, nothing written beside it.
+TEST_F(VisCommand, AMapThatIsNotQuakesIsRefused)
+{
+    const std::string zone = path("zone.bsp");
+    const std::vector<uint8_t> not_quake = {'P', 'F', 'S', ' ', 0, 0, 0, 0, 1, 2, 3, 4};
+    write_whole_file(zone, not_quake);
+    const size_t files = files_in_scratch();
+    EXPECT_EQ(vis_cli({"vis", "--portals", "tree", zone}), 1);
+    EXPECT_EQ(read_bytes(zone), not_quake);
+    EXPECT_EQ(files_in_scratch(), files);
 }
 
 TEST_F(VisCommand, Quake2ErrorsLeaveTheMapAsItWas)

@@ -16,7 +16,9 @@
 #include <cctype>
 
 #include <cstring>
+#include <filesystem>
 #include <random>
+#include <unistd.h>
 
 namespace pvs {
 namespace {
@@ -206,6 +208,27 @@ TEST(ZoneFile, UnknownAndMissingFilesGiveOneClearError)
     } catch (const FileError& e) {
         EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos);
     }
+}
+
+// A directory opens as a stream on Linux and reports a size of 2^63 - 1: reading it whole once
+// threw std::bad_alloc out of every command. Each format's path (by extension or by content)
+// names the directory instead.
+TEST(ZoneFile, ADirectoryIsNamedNotRead)
+{
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("pvscope-dir-" + std::to_string(::getpid()));
+    for (const char* name : {"zone.bsp", "zone.s3d", "zone.wad", "zone.obj", "zone"}) {
+        std::filesystem::create_directories(dir / name);
+        try {
+            load_zone((dir / name).string());
+            ADD_FAILURE() << name << " loaded";
+        } catch (const FileError& e) {
+            EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << name << ": " << e.what();
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << name << ": " << e.what();
+        }
+    }
+    std::filesystem::remove_all(dir);
 }
 
 } // namespace

@@ -337,4 +337,13 @@ std::string vis_method_names()
     return names;
 }
 
+std::string baking_method_names()
+{
+    std::string names;
+    for (const VisMethod& m : kMethods)
+        if (m.bakes)
+            names += (names.empty() ? "" : ", ") + std::string(m.name);
+    return names;
+}
+
 } // namespace pvs

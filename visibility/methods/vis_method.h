@@ -111,5 +111,7 @@ bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings);
 const VisMethod* find_vis_method(std::string_view name);
 // "file, none, portal-fast, ..." for messages and --help.
 std::string vis_method_names();
+// The same for the methods that bake (all but file and none).
+std::string baking_method_names();
 
 } // namespace pvs

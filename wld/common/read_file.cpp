@@ -4,12 +4,17 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace pvs {
 
 std::vector<uint8_t> read_whole_file(const std::string& path)
 {
+    // A directory opens as a stream on Linux and reports a size of 2^63 - 1.
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw FileError(path, 0, "is a directory, not a file");
     std::ifstream in(path, std::ios::binary | std::ios::ate);
     if (!in)
         throw FileError(path, 0, std::string("cannot open: ") + std::strerror(errno));

@@ -1,4 +1,5 @@
-// Reads a whole file into memory; throws pvs::FileError when it cannot be opened or read.
+// Reads a whole file into memory; throws pvs::FileError when it cannot be opened or read (a
+// directory included).
 #pragma once
 
 #include <cstdint>
