@@ -153,6 +153,15 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
     q.vis.method = o.fast || o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
     q.vis.level = o.level;
     q.vis.threads = o.threads;
+    std::optional<quake::PrtFile> prt;
+    const std::string prt_path = (fs::path(map).replace_extension(".prt")).string();
+    if (!o.phs_only) {
+        if (!fs::is_regular_file(prt_path)) {
+            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it)\n", prt_path.c_str());
+            return 1;
+        }
+        prt = quake::load_prt(prt_path);
+    }
     std::optional<ProgressBar> bar;
     if (!o.phs_only)
         bar.emplace(err, "vis");
@@ -163,15 +172,6 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
     };
     q.phs = o.phs_rule == "ericw" ? quake2::PhsRule::EricwTools : quake2::PhsRule::Quake2;
     q.phs_only = o.phs_only;
-    std::optional<quake::PrtFile> prt;
-    const std::string prt_path = (fs::path(map).replace_extension(".prt")).string();
-    if (!o.phs_only) {
-        if (!fs::is_regular_file(prt_path)) {
-            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it)\n", prt_path.c_str());
-            return 1;
-        }
-        prt = quake::load_prt(prt_path);
-    }
     const quake2::Quake2VisResult r = quake2::vis_quake2_map(bytes, map, prt ? &*prt : nullptr, prt_path, q);
     if (bar)
         bar->finish(r.cancelled ? "cancelled" : "done");
@@ -253,13 +253,21 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
 
 int run_vis_command(const VisCommandOptions& options, std::FILE* err, const std::atomic<bool>* cancel)
 {
+    // Nothing is written over the map before the vised file is complete: say so after an error.
+    const auto left_as_it_was = [&] {
+        std::error_code ec;
+        if (const std::string map = map_path(options.map); fs::is_regular_file(map, ec))
+            std::fprintf(err, "pvscope: %s left as it was\n", map.c_str());
+    };
     try {
         return checked(options, err, cancel);
     } catch (const FileError& e) {
         std::fprintf(err, "pvscope: error: %s\n", e.what());
+        left_as_it_was();
         return 1;
     } catch (const std::invalid_argument& e) {
         std::fprintf(err, "pvscope: error: %s\n", e.what());
+        left_as_it_was();
         return 2;
     }
 }

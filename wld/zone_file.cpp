@@ -19,7 +19,9 @@ namespace pvs {
 namespace {
 
 // qbsp writes the portal file next to the map, with the same name: pick it up when present.
-// Its leaf k is BSP leaf k+1 = region k, so it must name exactly the map's vis leaves.
+// Its leaf k is BSP leaf k+1 = region k, so it must name exactly the map's vis leaves. The map
+// does not need it: a portal file that cannot be used (broken, another map's) is left out with
+// a note saying why, and the map loads.
 void attach_sibling_prt(Zone& zone, const std::string& bsp_path)
 {
     std::filesystem::path prt_path(bsp_path);
@@ -27,11 +29,19 @@ void attach_sibling_prt(Zone& zone, const std::string& bsp_path)
     std::error_code ec;
     if (!std::filesystem::is_regular_file(prt_path, ec))
         return;
-    quake::PrtFile prt = quake::load_prt(prt_path.string());
-    if (prt.leaf_count != zone.region_count())
-        throw FileError(prt_path.string(), 0,
-                        "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + bsp_path + " has " +
-                            std::to_string(zone.region_count()) + " vis leaves (a portal file of another map?)");
+    quake::PrtFile prt;
+    try {
+        prt = quake::load_prt(prt_path.string());
+    } catch (const FileError& e) {
+        zone.source.notes.push_back(prt_path.filename().string() + " not used: " + e.what());
+        return;
+    }
+    if (prt.leaf_count != zone.region_count()) {
+        zone.source.notes.push_back(prt_path.filename().string() + " not used: it names " +
+                                    std::to_string(prt.leaf_count) + " leaves but the map has " +
+                                    std::to_string(zone.region_count()) + " vis leaves (a portal file of another map?)");
+        return;
+    }
     if (prt.has_clusters()) { // PRT2 / PRT1-AM: its portals join clusters, not regions
         zone.source.notes.push_back(prt_path.filename().string() +
                                     " is a clustered portal file (PRT2 / PRT1-AM): its portals are not shown");

@@ -9,6 +9,7 @@
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake2/ibsp38_file.h"
 #include "wld/quake2/ibsp38_zone.h"
+#include "wld/common/read_file.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
@@ -208,6 +209,32 @@ TEST(ZoneFile, UnknownAndMissingFilesGiveOneClearError)
     } catch (const FileError& e) {
         EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos);
     }
+}
+
+// A broken portal file, or another map's, beside a good map: the map loads, without those portals,
+// and a note says why (the map does not need its .prt; info, check and the inspector still work).
+TEST(ZoneFile, ABrokenPortalFileBesideAMapIsANoteNotAnError)
+{
+    SHARED_DATA_OR_SKIP(map, "visdemo/example.bsp");
+    SHARED_DATA_OR_SKIP(other_prt, "modern-quake/q2/q2_areaportals.prt");
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("pvscope-prt-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path copy = dir / "example.bsp", prt = dir / "example.prt";
+    std::filesystem::copy_file(map, copy, std::filesystem::copy_options::overwrite_existing);
+    const auto note_with = [&](const std::string& text) {
+        const Zone zone = load_zone(copy.string());
+        EXPECT_FALSE(zone.portals.has_value());
+        for (const std::string& note : zone.source.notes)
+            if (note.find("example.prt not used") != std::string::npos && note.find(text) != std::string::npos)
+                return true;
+        return false;
+    };
+    write_whole_file(prt.string(), {'P', 'R', 'T', '1', '\n', '1', '1'});
+    EXPECT_TRUE(note_with("example.prt")) << "truncated";
+    std::filesystem::copy_file(other_prt, prt, std::filesystem::copy_options::overwrite_existing);
+    EXPECT_TRUE(note_with("names 8 leaves but the map has 11")) << "another map's";
+    std::filesystem::remove_all(dir);
 }
 
 // A directory opens as a stream on Linux and reports a size of 2^63 - 1: reading it whole once
