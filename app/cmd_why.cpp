@@ -32,6 +32,7 @@ struct WhyCommandOptions {
     bool heights = false;
     unsigned threads = 0;
     std::string sky = "sky-to-sky";
+    bool no_chain = false;
     ZoneLoadOptions load;
 };
 
@@ -63,6 +64,10 @@ void print_text(const Zone& zone, const std::string& pvs_name, const PairExplana
     if (e.grid)
         return; // no portal flow on a grid of cells
     const char* method = e.chain_2d ? "portal-full (2-D)" : "portal-full";
+    if (!e.flow_run) {
+        std::printf("  chain        not searched (--no-chain)\n");
+        return;
+    }
     if (!e.chain) {
         std::printf("  chain        %s %s\n", method, e.flow_holds ? "holds B (no chain recorded)" : "does not hold B");
         return;
@@ -83,7 +88,9 @@ int run_why(const WhyCommandOptions& o)
 {
     try {
         const Zone zone = load_zone(o.path, o.load);
-        const PvsSource source = make_pvs_source(zone, o.pvs);
+        // Explaining portal-full's own PVS: the flow run for the chain is that PVS (one bake, not two).
+        const bool flow_is_the_pvs = o.pvs == "portal-full" && !zone.view_grid && !o.no_chain;
+        const PvsSource source = flow_is_the_pvs ? PvsSource{} : make_pvs_source(zone, o.pvs);
         if ((o.pvs == "file" || o.pvs == "baked") && source.pvs == nullptr)
             throw std::invalid_argument(zone.source.path + " carries no PVS: name one with --pvs (" +
                                         vis_method_names() + ")");
@@ -94,8 +101,10 @@ int run_why(const WhyCommandOptions& o)
         options.flow.threads = o.threads;
         options.witness_budget = o.budget;
         options.seed = o.seed;
+        options.want_chain = !o.no_chain;
+        options.explain_the_flow = flow_is_the_pvs;
         std::optional<ProgressBar> bar; // the portal flow's (a grid zone has none)
-        if (!zone.view_grid) {
+        if (!zone.view_grid && !o.no_chain) {
             bar.emplace(stderr, "why: portal-full");
             options.flow.progress = [&bar](double f) {
                 bar->update(f);
@@ -144,6 +153,9 @@ void register_why_command(CLI::App& app, int& exit_code)
     cmd->add_option("--level", o->level, "portal-full's separator test level, 0..4")
         ->check(CLI::Range(0, 4))
         ->capture_default_str();
+    cmd->add_flag("--no-chain", o->no_chain,
+                  "Skip portal-full's chain: the bit, the sight line and the verdict only (the chain needs a flow "
+                  "over the whole zone: minutes on large open zones)");
     cmd->add_flag("--heights", o->heights, "Doom: floors and ceilings block sight (the 3-D flow), as bake --heights");
     cmd->add_option("--threads", o->threads, "Worker threads of the flow (0 = all cores)")
         ->check(threads_validator())

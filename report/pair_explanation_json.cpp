@@ -45,7 +45,8 @@ nlohmann::json pair_explanation_json(const std::string& file, const std::string&
     j["witness_regions"] = e.witness_regions;
     j["flow_cut"] = e.flow_cut ? nlohmann::json(e.witness_regions[*e.flow_cut]) : nlohmann::json(nullptr);
     j["chain_method"] = e.chain_2d ? "portal-full (2-D)" : "portal-full";
-    j["flow_holds"] = e.flow_holds;
+    j["flow_run"] = e.flow_run;
+    j["flow_holds"] = e.grid || e.flow_run ? nlohmann::json(e.flow_holds) : nlohmann::json(nullptr);
     j["size_unit"] = e.chain_2d ? "width" : "area";
     if (!e.chain) {
         j["portal_chain"] = nullptr;

@@ -59,6 +59,30 @@ TEST(WhyCommand, JsonOfASeenPairAndAHiddenOne)
     EXPECT_EQ(hidden["portal_chain"].is_null(), !hidden["flow_holds"].get<bool>());
 }
 
+// --pvs portal-full explains the flow it runs for the chain (one bake): its bits are the hand-
+// derived rows'. --no-chain runs no flow: the bit, the sight line and the verdict as with it,
+// no chain, and "flow_holds" unknown (null), not false.
+TEST(WhyCommand, PortalFullIsItsOwnFlowAndNoChainSkipsIt)
+{
+    SHARED_DATA_OR_SKIP(example, "visdemo/example.bsp");
+    for (const uint32_t b : {3u, 8u, 10u}) {
+        const std::string pair = example + " 0 " + std::to_string(b);
+        const bool expected = std::count(kExampleExpected[0].begin(), kExampleExpected[0].end(), b) > 0;
+        const nlohmann::json with_chain = why_json(pair + " --pvs portal-full");
+        ASSERT_FALSE(with_chain.is_null());
+        EXPECT_EQ(with_chain["in_pvs"].get<bool>(), expected) << "0 -> " << b;
+        EXPECT_TRUE(with_chain["flow_run"].get<bool>());
+        EXPECT_EQ(with_chain["flow_holds"].get<bool>(), expected) << "the flow is the PVS explained";
+        const nlohmann::json without = why_json(pair + " --pvs file --no-chain");
+        ASSERT_FALSE(without.is_null());
+        EXPECT_EQ(without["in_reference"], with_chain["in_reference"]) << "0 -> " << b;
+        EXPECT_FALSE(without["flow_run"].get<bool>());
+        EXPECT_TRUE(without["flow_holds"].is_null());
+        EXPECT_TRUE(without["portal_chain"].is_null());
+        EXPECT_NE(without["verdict"], "unexplained");
+    }
+}
+
 TEST(WhyCommand, BadRegionOrFileIsExitTwoWithTheReason)
 {
     SHARED_DATA_OR_SKIP(example, "visdemo/example.bsp");

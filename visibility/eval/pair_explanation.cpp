@@ -61,6 +61,7 @@ Pvs find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& o
     params.probe = &probe;
     const uint32_t regions = uint32_t(zone.region_count());
     const Pvs flow = e.chain_2d ? bake_portal_vis_2d(e.portals, regions, params) : bake_portal_vis(e.portals, regions, params);
+    e.flow_run = true;
     e.flow_holds = flow.visible(a, b);
     if (const FlowChain* best = probe.best())
         e.chain = *best;
@@ -71,7 +72,7 @@ std::string describe(const PairExplanation& e)
 {
     char text[512];
     const char* unit = e.chain_2d ? "units wide" : "square units";
-    std::string chain_words = "portal-full has no chain from A to B";
+    std::string chain_words = e.flow_run ? "portal-full has no chain from A to B" : "portal-full's flow was not run";
     if (e.chain) {
         size_t narrowest = 0;
         for (size_t k = 1; k < e.chain->steps.size(); ++k)
@@ -186,11 +187,16 @@ PairExplanation explain_pair(const Zone& zone, const Pvs* pvs, uint32_t a, uint3
     PairExplanation e;
     e.a = a;
     e.b = b;
-    e.has_pvs = pvs != nullptr && a < pvs->row_count() && b < pvs->region_count();
-    e.in_pvs = !e.has_pvs || pvs->visible(a, b); // no PVS: every region is drawn
     std::optional<Pvs> flow;
     if (options.want_chain)
         flow = find_chain(zone, a, b, options, e);
+    if (options.explain_the_flow) {
+        if (!flow)
+            throw std::invalid_argument("explaining portal-full's own PVS needs its flow (want_chain)");
+        pvs = &*flow;
+    }
+    e.has_pvs = pvs != nullptr && a < pvs->row_count() && b < pvs->region_count();
+    e.in_pvs = !e.has_pvs || pvs->visible(a, b); // no PVS: every region is drawn
 
     const TreeTracer tracer(zone.tree, zone.regions, options.flow.sky);
     const RegionSampler sampler(zone);

@@ -47,6 +47,9 @@ struct ExplainOptions {
     uint64_t witness_budget = 200000;
     uint64_t seed = 1;
     bool want_chain = true;    // false: no flow is run (the witness only)
+    // The PVS explained is portal-full's own with these settings: the flow run for the chain is
+    // that PVS, so the `pvs` argument is ignored and no second bake is needed (needs want_chain).
+    bool explain_the_flow = false;
 };
 
 struct WitnessCamera {
@@ -64,6 +67,7 @@ struct PairExplanation {
     std::optional<FlowChain> chain;
     bool chain_2d = false;   // the chain is the 2-D flow's (widths, not areas)
     bool grid = false;       // a grid zone: a is a view cell, b an object (no flow, no chain)
+    bool flow_run = false;   // the portal flow ran (ExplainOptions::want_chain, a zone with a tree)
     bool flow_holds = false; // the flow's row of A holds B (it then has a chain)
     PortalSet portals;       // the portals the chain's steps index
     // The regions the witness passes through, in order from A to B, and (when the flow lacks a
