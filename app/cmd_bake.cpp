@@ -135,6 +135,8 @@ std::string check_options(const BakeOptions& o)
         return "--level must be 0..4, not " + std::to_string(o.level);
     if (o.sky != "sky-to-sky" && o.sky != "all" && o.sky != "none")
         return "--sky must be sky-to-sky, all or none, not '" + o.sky + "'";
+    if (o.phs_rule != "quake2" && o.phs_rule != "ericw")
+        return "--phs-rule must be quake2 or ericw, not '" + o.phs_rule + "'";
     if (o.clusters != "none" && o.clusters != "auto")
         return "--clusters must be none or auto, not '" + o.clusters + "'";
     if (!o.prt_out.empty() && o.prt_out == o.output)
@@ -366,6 +368,7 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FI
     PvsWriteOptions write_options;
     write_options.quake_ambient = o.ambient;
     write_options.ambient = o.ambient_classes;
+    write_options.phs = o.phs_rule == "ericw" ? quake2::PhsRule::EricwTools : quake2::PhsRule::Quake2;
     const PvsWriteback written =
         write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output, write_options);
     for (const std::string& note : written.notes)
@@ -710,6 +713,11 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_flag("--reject", o->reject, "Doom: also rebuild the map's REJECT from the PVS (as glVIS does)");
     cmd->add_flag("!--no-ambient", o->ambient,
                   "Quake: keep the map's ambient sound levels instead of computing them from the new PVS (as vis does)");
+    cmd->add_option("--phs-rule", o->phs_rule,
+                    "Quake 2: the PHS written with the PVS: quake2 (the engine's, as id's qvis3) or ericw (what "
+                    "ericw-tools vis writes)")
+        ->check(CLI::IsMember({"quake2", "ericw"}))
+        ->capture_default_str();
     cmd->add_option("--apply-edits", o->apply_edits, "Apply this PVS edit list (saved by the inspector) to the bake "
                                                      "before writing it: hand fixes that survive a re-vis")
         ->check(CLI::ExistingFile);

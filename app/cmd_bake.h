@@ -81,6 +81,7 @@ struct BakeOptions {
     // file's levels are kept).
     bool ambient = true;
     quake::AmbientOptions ambient_classes; // which texture classes count (vis's -noambient* switches)
+    std::string phs_rule = "quake2"; // Quake 2 maps: the PHS written with the PVS, quake2 | ericw
     // A PVS edit list (wld/pvs_edit_list.h) applied to the bake before it is written: hand fixes
     // that survive a re-vis.
     std::string apply_edits;

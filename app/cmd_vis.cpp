@@ -144,8 +144,9 @@ nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map,
 int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
                const std::atomic<bool>* cancel)
 {
-    if (o.ambient_only || o.portals != "file") {
-        std::fprintf(err, "pvscope: error: %s is a Quake 2 map: --ambient-only and --portals tree are for Quake maps\n",
+    if (o.ambient_only) {
+        std::fprintf(err, "pvscope: error: %s is a Quake 2 map: --ambient-only is for Quake maps (Quake 2 keeps no "
+                          "ambient sounds in the map)\n",
                      map.c_str());
         return 2;
     }
@@ -189,34 +190,12 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
     return 0;
 }
 
-int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
+// vis through bake: the PVS from MAP.prt or (--portals tree) from the BSP tree, written to a
+// temporary file beside the map that then replaces it. Quake maps get ambient sounds, Quake 2
+// maps the PHS by --phs-rule.
+int vis_through_bake(const VisCommandOptions& o, const std::string& map, std::FILE* err,
+                     const std::atomic<bool>* cancel)
 {
-    if (o.visdist > 0.0) {
-        std::fprintf(err, "pvscope: error: -visdist is not supported: pvscope bakes what the portals let through; "
-                          "a distance cut belongs to the renderer's far plane\n");
-        return 2;
-    }
-    const std::string map = map_path(o.map);
-    if (!fs::is_regular_file(map)) {
-        std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
-        return 1;
-    }
-    const std::vector<uint8_t> head = read_file_head(map, 8);
-    if (quake2::looks_like_ibsp38(head))
-        return quake2_vis(o, map, read_whole_file(map), err, cancel);
-    if (!quake::detect_bsp_variant(head)) {
-        const std::string header = quake::describe_bsp_header(head);
-        std::fprintf(err, "pvscope: error: %s: offset 0: not a Quake map (%s): vis writes Quake BSP 29, BSP2, 2PSB and "
-                          "Quake 2 IBSP 38 maps; `pvscope bake` writes the other formats\n",
-                     map.c_str(), header.starts_with("version ") ? "no BSP header" : header.c_str());
-        return 1;
-    }
-    if (o.phs_only) {
-        std::fprintf(err, "pvscope: error: --phs-only is for Quake 2 maps (IBSP 38); %s is not one\n", map.c_str());
-        return 2;
-    }
-    if (o.ambient_only)
-        return ambient_only(o, map, err);
     BakeOptions b;
     b.input = map;
     b.method = o.fast ? "portal-fast" : o.method;
@@ -225,6 +204,7 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
     b.report = o.report;
     b.ambient = true;
     b.ambient_classes = ambient_classes(o);
+    b.phs_rule = o.phs_rule;
     if (o.portals == "file") {
         const std::string prt = (fs::path(map).replace_extension(".prt")).string();
         if (!fs::is_regular_file(prt)) {
@@ -245,6 +225,46 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
         return code;
     }
     replace_map(temporary, map);
+    return 0;
+}
+
+int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
+{
+    if (o.visdist > 0.0) {
+        std::fprintf(err, "pvscope: error: -visdist is not supported: pvscope bakes what the portals let through; "
+                          "a distance cut belongs to the renderer's far plane\n");
+        return 2;
+    }
+    const std::string map = map_path(o.map);
+    if (!fs::is_regular_file(map)) {
+        std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
+        return 1;
+    }
+    const std::vector<uint8_t> head = read_file_head(map, 8);
+    if (quake2::looks_like_ibsp38(head)) {
+        if (o.portals == "file" || o.phs_only || o.ambient_only)
+            return quake2_vis(o, map, read_whole_file(map), err, cancel);
+        // --portals tree: per leaf from the tree, the leaves' rows ORed per cluster (as bake).
+        if (const int code = vis_through_bake(o, map, err, cancel); code != 0)
+            return code;
+        std::fprintf(err, "%s: PVS and PHS written in place\n", map.c_str());
+        return 0;
+    }
+    if (!quake::detect_bsp_variant(head)) {
+        const std::string header = quake::describe_bsp_header(head);
+        std::fprintf(err, "pvscope: error: %s: offset 0: not a Quake map (%s): vis writes Quake BSP 29, BSP2, 2PSB and "
+                          "Quake 2 IBSP 38 maps; `pvscope bake` writes the other formats\n",
+                     map.c_str(), header.starts_with("version ") ? "no BSP header" : header.c_str());
+        return 1;
+    }
+    if (o.phs_only) {
+        std::fprintf(err, "pvscope: error: --phs-only is for Quake 2 maps (IBSP 38); %s is not one\n", map.c_str());
+        return 2;
+    }
+    if (o.ambient_only)
+        return ambient_only(o, map, err);
+    if (const int code = vis_through_bake(o, map, err, cancel); code != 0)
+        return code;
     std::fprintf(err, "%s: PVS and ambient sounds written in place\n", map.c_str());
     return 0;
 }

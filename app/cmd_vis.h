@@ -14,8 +14,9 @@
 // A Quake 2 map (IBSP 38) gets Quake 2's vis instead (wld/quake2/quake2_vis.h): the PVS over its
 // clusters from the PRT1 beside it and the PHS made from it, both into the visibility lump;
 // -phsonly / --phs-only keeps the PVS and makes the PHS again; --phs-rule quake2 (default: the
-// engine's, id's qvis3) or ericw (what ericw-tools vis writes, byte for byte). No ambient sounds
-// there (Quake 2 has none in the map).
+// engine's, id's qvis3) or ericw (what ericw-tools vis writes, byte for byte); --portals tree
+// bakes per leaf from the map's tree and writes the leaves' rows ORed per cluster (as bake). No
+// ambient sounds there (Quake 2 has none in the map).
 // Unknown options are an error and nothing is written.
 // Exit codes: 0 done, 1 a file could not be read or written, 2 bad arguments, 130 cancelled.
 #pragma once

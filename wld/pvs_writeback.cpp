@@ -76,7 +76,7 @@ PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& l
                 {}};
     }
     if (quake2::looks_like_ibsp38(bytes)) {
-        const quake2::Quake2ZonePvsResult q = quake2::write_quake2_zone_pvs(bytes, path, zone, pvs);
+        const quake2::Quake2ZonePvsResult q = quake2::write_quake2_zone_pvs(bytes, path, zone, pvs, options.phs);
         write_whole_file(out_path, q.map);
         char line[160];
         std::snprintf(line, sizeof line, ": %u clusters (the leaves' rows ORed per cluster), mean %.1f visible, %.1f hearable",

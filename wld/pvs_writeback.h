@@ -9,7 +9,7 @@
 //   Doom WAD      -> a copy of the file holding the map's GL nodes with GL_PVS set
 //                    (doom/gl_pvs_writer.h);
 //   Quake 2 map   -> the .bsp with a visibility lump over its clusters (the leaves' rows ORed
-//                    per cluster) and the PHS made from it (quake2/quake2_vis.h).
+//                    per cluster) and the PHS made from it by PvsWriteOptions::phs (quake2/quake2_vis.h).
 // The format is recognised from the zone's own file (zone.source.path, opened again with `load`
 // for a Doom map). Throws FileError for a zone that has no file (a generated zone) or a file
 // that changed since, std::invalid_argument for a PVS of the wrong size.
@@ -18,6 +18,7 @@
 #include "visibility/pvs.h"
 #include "visibility/zone.h"
 #include "wld/quake/ambient_sounds.h"
+#include "wld/quake2/phs.h"
 #include "wld/zone_file.h"
 
 #include <string>
@@ -28,6 +29,7 @@ namespace pvs {
 struct PvsWriteOptions {
     bool quake_ambient = true;          // Quake: write ambient sound levels from the new rows
     quake::AmbientOptions ambient;      // which texture classes count (vis's -noambient* switches)
+    quake2::PhsRule phs = quake2::PhsRule::Quake2; // Quake 2: which PHS is written (quake2/phs.h)
 };
 
 struct PvsWriteback {

@@ -338,6 +338,35 @@ TEST_F(VisCommand, Quake2BakeWithThePortalFileWritesWhatVisWrites)
     EXPECT_EQ(read_bytes(per_leaf.output), read_bytes(path("per-leaf.bsp")));
 }
 
+// vis --portals tree on a Quake 2 map: bake's per-leaf PVS from the tree (checked against ericw's
+// rows above) written in place, byte for byte bake's file, with the PHS by --phs-rule.
+TEST_F(VisCommand, Quake2PortalsFromTheTreeAreBakesAndKeepThePhsRule)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_tjunc_matrix.bsp");
+    const std::string map = copy({"modern-quake/q2/q2_tjunc_matrix.bsp"});
+    ASSERT_FALSE(map.empty());
+    const std::vector<uint8_t> before = read_bytes(map);
+    std::vector<std::vector<uint64_t>> phs;
+    for (const char* rule : {"quake2", "ericw"}) {
+        write_whole_file(map, before);
+        ASSERT_EQ(vis_cli({"vis", "--portals", "tree", "-threads", "2", "--phs-rule", rule, map}), 0) << rule;
+        app::BakeOptions options;
+        options.input = source;
+        options.output = path(std::string("baked-") + rule + ".bsp");
+        options.threads = 2;
+        options.phs_rule = rule;
+        ASSERT_EQ(run(options), 0) << err_;
+        EXPECT_EQ(read_bytes(map), read_bytes(options.output)) << rule;
+        const quake2::Ibsp38File out = quake2::read_ibsp38(read_bytes(map), map);
+        EXPECT_EQ(out.phs_rows, quake2::compute_phs(out.pvs_rows, out.clusters,
+                                                    std::string(rule) == "ericw" ? quake2::PhsRule::EricwTools
+                                                                                 : quake2::PhsRule::Quake2))
+            << rule;
+        phs.push_back(out.phs_rows);
+    }
+    EXPECT_NE(phs[0], phs[1]) << "96 clusters: the two rules differ, so the rule reached the writer";
+}
+
 // -phsonly with ericw's rule on ericw's own output: the PVS kept, the PHS ericw's byte for byte
 // (decoded rows and their stored lengths); with Quake 2's rule the PHS holds ericw's.
 TEST_F(VisCommand, Quake2PhsOnlyRebuildsEricwsPhs)
