@@ -141,6 +141,12 @@ std::string check_options(const BakeOptions& o)
         return "--clusters must be none or auto, not '" + o.clusters + "'";
     if (!o.prt_out.empty() && o.prt_out == o.output)
         return "--write-prt and -o name the same file";
+    for (const auto& [option, file] : {std::pair{"-o", &o.output}, {"--report", &o.report}, {"--write-prt", &o.prt_out}})
+        if (const std::string folder = missing_folder(*file); !folder.empty())
+            return std::string(option) + " " + *file + ": no folder " + folder + " to write it in";
+    std::error_code ec;
+    if (!o.apply_edits.empty() && !std::filesystem::is_regular_file(o.apply_edits, ec))
+        return "--apply-edits " + o.apply_edits + ": no such file";
     return {};
 }
 
@@ -667,6 +673,15 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
 }
 
 } // namespace
+
+std::string missing_folder(const std::string& path)
+{
+    if (path.empty() || path == "-")
+        return {};
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    std::error_code ec;
+    return folder.empty() || std::filesystem::is_directory(folder, ec) ? std::string() : folder.string();
+}
 
 void write_report(const std::string& path, const nlohmann::json& report)
 {

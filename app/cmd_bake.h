@@ -91,6 +91,10 @@ struct BakeOptions {
 // bake runs (the command passes its SIGINT flag): true cancels. Returns the exit code.
 int run_bake(const BakeOptions& options, std::FILE* err = stderr, const std::atomic<bool>* cancel = nullptr);
 
+// The folder a file is to be written into when it does not exist ("" when it does, for a bare
+// name and for "-", stdout): checked before a bake, not after its minutes of work.
+std::string missing_folder(const std::string& path);
+
 // Writes a --report JSON to `path` ("-": standard output); throws when the file cannot be written.
 void write_report(const std::string& path, const nlohmann::json& report);
 

@@ -235,6 +235,10 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
                           "a distance cut belongs to the renderer's far plane\n");
         return 2;
     }
+    if (const std::string folder = missing_folder(o.report); !folder.empty()) {
+        std::fprintf(err, "pvscope: error: --report %s: no folder %s to write it in\n", o.report.c_str(), folder.c_str());
+        return 2;
+    }
     const std::string map = map_path(o.map);
     if (!fs::is_regular_file(map)) {
         std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());

@@ -273,7 +273,9 @@ void register_walk_command(CLI::App& app, int& exit_code)
                     "this many units (an EverQuest client uses 5); 0 = pvscope's culler (a tree walk every frame)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    cmd->add_option("--cull", o->cull, "none | frustum | pvs | pvs+frustum")->capture_default_str();
+    cmd->add_option("--cull", o->cull, "Which culling stages run: none | frustum | pvs | pvs+frustum")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"none", "frustum", "pvs", "pvs+frustum"}));
     cmd->add_option("--pvs", o->pvs,
                     "PVS source: baked (the file's), none, or portal-fast / portal-full (baked now from "
                     "portals built from the zone's tree)")

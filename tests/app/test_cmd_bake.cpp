@@ -249,6 +249,21 @@ TEST_F(Bake, BadArgumentsAreRefusedWithAMessageAndNothingIsWritten)
     EXPECT_EQ(run(o), 1);
     EXPECT_NE(err_.find("unknown file format"), std::string::npos) << err_;
     EXPECT_FALSE(fs::exists(o.output));
+
+    // A file to be written into a folder that is not there, or an edit list that is not there:
+    // refused before the bake (they once failed after it, the map already written).
+    o.input = input;
+    o.report = path("no-such-folder/report.json");
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("no folder"), std::string::npos) << err_;
+    o.report.clear();
+    o.prt_out = path("no-such-folder/out.prt");
+    EXPECT_EQ(run(o), 2);
+    o.prt_out.clear();
+    o.apply_edits = path("no-such-edits.json");
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("no such file"), std::string::npos) << err_;
+    EXPECT_FALSE(fs::exists(o.output));
 }
 
 TEST_F(Bake, AZoneWithNoPortalsIsBakedWithWarnings)

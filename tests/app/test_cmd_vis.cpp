@@ -415,6 +415,7 @@ TEST_F(VisCommand, Quake2ErrorsLeaveTheMapAsItWas)
     EXPECT_EQ(vis_cli({"vis", map}), 1) << "another map's portals (8 leaves for 18 clusters)";
     EXPECT_EQ(vis_cli({"vis", "--phs-only", map}), 1) << "no PVS to make a PHS from";
     EXPECT_EQ(vis_cli({"vis", "--phs-rule", "q3", map}), -2);
+    EXPECT_EQ(vis_cli({"vis", "--report", path("no-such-folder/r.json"), map}), 2) << "refused before the vis";
     EXPECT_EQ(read_bytes(map), before);
     SHARED_DATA_OR_SKIP(q1, "modern-quake/q1/lqdm2.bsp");
     const std::string quake1 = copy({"modern-quake/q1/lqdm2.bsp"});
