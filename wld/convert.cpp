@@ -10,6 +10,8 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 
 namespace pvs {
 
@@ -55,17 +57,30 @@ std::vector<std::string> write_zone(const Zone& zone, const std::string& path, Z
                       zone.view_grid ? "" : " (each the union of the rows of the regions touching it)");
         return {note};
     }
+    if (!zone.tree.exists())
+        throw std::invalid_argument(zone.view_grid ? "an OBJ level's regions are objects over a view grid, with no BSP "
+                                                     "tree: an EverQuest zone needs its regions as the leaves of one"
+                                                   : "the zone has no BSP tree of regions: an EverQuest zone needs one");
     const std::string name = std::filesystem::path(path).stem().string();
+    std::optional<Zone> cut;
+    std::vector<std::string> notes;
     if (faces_shared_between_regions(zone)) {
-        const Zone cut = clip_faces_to_region_cells(zone);
-        auto written = eq::write_eq_zone_archive(cut, name, {});
-        write_whole_file(path, written.bytes);
-        written.notes.insert(written.notes.begin(), "faces shared between regions were clipped to each region's cell");
-        return written.notes;
+        cut = clip_faces_to_region_cells(zone);
+        notes.push_back("faces shared between regions were clipped to each region's cell");
     }
-    auto written = eq::write_eq_zone_archive(zone, name, {});
+    const Zone& written_zone = cut ? *cut : zone;
+    // The old WLD form (i16 uvs, read by every client) unless a face's uvs need the new one's f32.
+    eq::EqWriteOptions options;
+    if (const std::optional<uint32_t> face = eq::face_beyond_old_wld_form(written_zone)) {
+        options.wld_version = eq::kWldVersionNew;
+        notes.push_back("face " + std::to_string(*face) + "'s texture coordinates span more than the old WLD form's 256 "
+                        "repeats: written as the new WLD version (f32 uvs; clients that read only the old form "
+                        "cannot open it)");
+    }
+    auto written = eq::write_eq_zone_archive(written_zone, name, options);
     write_whole_file(path, written.bytes);
-    return written.notes;
+    notes.insert(notes.end(), written.notes.begin(), written.notes.end());
+    return notes;
 }
 
 } // namespace pvs

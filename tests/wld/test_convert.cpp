@@ -6,6 +6,7 @@
 #include "visibility/region_lookup.h"
 #include "wld/convert.h"
 #include "wld/eq/eq_zone_writer.h"
+#include "wld/gen/generate_zone.h"
 #include "wld/obj/obj_writer.h"
 #include "wld/zone_file.h"
 
@@ -72,6 +73,43 @@ TEST(Convert, E1m1ToS3dKeepsRegionsFlagsPvsLookupsAndAreaPerTexture)
     const auto before = area_per_texture(quake, eq::eq_texture_file_names(quake)), after = area_per_texture(eq);
     for (const auto& [name, area] : before)
         EXPECT_NEAR(after.at(name), area, 1e-3 * area) << name;
+}
+
+// A face whose texture repeats 2000 times across it: the old WLD form (i16 / 256 uvs) cannot hold
+// that, so convert writes the new version (f32 uvs) with a note, and the uvs read back as given;
+// a zone whose uvs fit keeps the old form (no note). An OBJ level (no tree) is refused by name.
+TEST(Convert, UvsBeyondTheOldWldFormAreWrittenInTheNewVersion)
+{
+    Zone zone = gen::generate_zone({5, 7, 32.0f, false});
+    ASSERT_FALSE(eq::face_beyond_old_wld_form(zone).has_value());
+    const std::filesystem::path dir = std::filesystem::temp_directory_path();
+    const std::string plain = (dir / "pvscope-convert-plain.s3d").string();
+    for (const std::string& note : write_zone(zone, plain, ZoneOutput::S3d))
+        EXPECT_EQ(note.find("new WLD version"), std::string::npos) << note;
+
+    const uint32_t stretched = zone.region_faces[0];
+    const Face& face = zone.mesh.faces[stretched];
+    for (uint32_t i = face.first_triangle * 3; i < (face.first_triangle + face.triangle_count) * 3; ++i)
+        zone.mesh.uvs[zone.mesh.indices[i]] *= 2000.0f;
+    EXPECT_EQ(eq::face_beyond_old_wld_form(zone), stretched);
+    const std::string path = (dir / "pvscope-convert-stretched.s3d").string();
+    const std::vector<std::string> notes = write_zone(zone, path, ZoneOutput::S3d);
+    EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+        return n.find("new WLD version") != std::string::npos;
+    }));
+    const Zone back = load_zone(path);
+    ASSERT_EQ(back.region_count(), zone.region_count());
+    float widest = 0.0f;
+    for (const glm::vec2& uv : back.mesh.uvs)
+        widest = std::max({widest, std::abs(uv.x), std::abs(uv.y)});
+    EXPECT_GT(widest, 256.0f) << "the stretched face's uvs survive";
+    std::filesystem::remove(plain);
+    std::filesystem::remove(path);
+
+    Zone level;
+    level.view_grid.emplace();
+    EXPECT_THROW(write_zone(level, (dir / "pvscope-convert-level.s3d").string(), ZoneOutput::S3d),
+                 std::invalid_argument);
 }
 
 TEST(Convert, OutputFormatFromTheExtensionOrTo)

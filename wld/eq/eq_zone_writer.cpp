@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <tuple>
@@ -297,11 +298,11 @@ void add_normals(WldMesh& m)
 
 // The whole number of texture repeats a face's uvs move by so that the old form (i16 / 256,
 // about [-128, 128)) holds them: 0 when they fit as they are (so a written file writes back
-// unchanged), else the rounded middle of their range. The picture is the same.
-glm::vec2 uv_shift(const Zone& zone, const Face& face, WldUvForm form, uint32_t face_index)
+// unchanged), else the rounded middle of their range; nothing when no whole shift makes them fit
+// (`axis`: the first axis that does not, `lo`/`hi` its range). The picture is the same.
+std::optional<glm::vec2> old_form_uv_shift(const Zone& zone, const Face& face, int* axis = nullptr,
+                                           glm::vec2* range_lo = nullptr, glm::vec2* range_hi = nullptr)
 {
-    if (form == WldUvForm::F32 || zone.mesh.uvs.empty())
-        return glm::vec2(0.0f);
     glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
     for (uint32_t i = face.first_triangle * 3; i < (face.first_triangle + face.triangle_count) * 3; ++i) {
         lo = glm::min(lo, zone.mesh.uvs[zone.mesh.indices[i]]);
@@ -313,11 +314,30 @@ glm::vec2 uv_shift(const Zone& zone, const Face& face, WldUvForm form, uint32_t 
             continue;
         const double middle = std::round((double{lo[k]} + double{hi[k]}) * 0.5);
         shift[k] = static_cast<float>(middle);
-        if (!std::isfinite(middle) || !fits_i16_uv(lo[k] - shift[k]) || !fits_i16_uv(hi[k] - shift[k]))
-            refuse("face " + std::to_string(face_index) + "'s uvs span [" + std::to_string(lo[k]) + ", " +
-                   std::to_string(hi[k]) + "]: more than the old WLD form's 256 repeats (write the new version)");
+        if (!std::isfinite(middle) || !fits_i16_uv(lo[k] - shift[k]) || !fits_i16_uv(hi[k] - shift[k])) {
+            if (axis)
+                *axis = k;
+            if (range_lo)
+                *range_lo = lo;
+            if (range_hi)
+                *range_hi = hi;
+            return std::nullopt;
+        }
     }
     return shift;
+}
+
+glm::vec2 uv_shift(const Zone& zone, const Face& face, WldUvForm form, uint32_t face_index)
+{
+    if (form == WldUvForm::F32 || zone.mesh.uvs.empty())
+        return glm::vec2(0.0f);
+    int k = 0;
+    glm::vec2 lo, hi;
+    const std::optional<glm::vec2> shift = old_form_uv_shift(zone, face, &k, &lo, &hi);
+    if (!shift)
+        refuse("face " + std::to_string(face_index) + "'s uvs span [" + std::to_string(lo[k]) + ", " +
+               std::to_string(hi[k]) + "]: more than the old WLD form's 256 repeats (write the new version)");
+    return *shift;
 }
 
 // Copies the region's faces into a mesh: faces sorted by material (stable), each face's
@@ -731,6 +751,16 @@ EqZoneArchive write_eq_zone_archive(const Zone& zone, const std::string& zone_na
     note_materials(zone, out.notes);
     note_geometry(zone, out.notes);
     return out;
+}
+
+std::optional<uint32_t> face_beyond_old_wld_form(const Zone& zone)
+{
+    if (zone.mesh.uvs.empty())
+        return std::nullopt;
+    for (uint32_t f = 0; f < zone.mesh.faces.size(); ++f)
+        if (!old_form_uv_shift(zone, zone.mesh.faces[f]))
+            return f;
+    return std::nullopt;
 }
 
 std::vector<uint8_t> write_eq_zone(const Zone& zone, const std::string& zone_name, const EqWriteOptions& options)

@@ -36,6 +36,7 @@
 #include "wld/eq/wld_file.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,10 @@ struct EqZoneArchive {
 // span more than the old form's 256 repeats, a VISLIST over 65535 bytes, a zone line index over
 // 999999, and out-of-range indices anywhere in the zone.
 EqZoneArchive write_eq_zone_archive(const Zone& zone, const std::string& zone_name, const EqWriteOptions& options = {});
+
+// The first face whose uvs the old WLD form cannot hold (they span more than its 256 repeats),
+// or nothing: such a zone must be written with kWldVersionNew.
+std::optional<uint32_t> face_beyond_old_wld_form(const Zone& zone);
 
 // write_eq_zone_archive(...).bytes.
 std::vector<uint8_t> write_eq_zone(const Zone& zone, const std::string& zone_name, const EqWriteOptions& options = {});
