@@ -110,6 +110,9 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
     if (doom::file_looks_like_wad(path)) // a Doom WAD or a .gwa, read with its sibling
         return doom::load_doom_zone(path, options.map, options.gwa);
     const std::vector<uint8_t> bytes = read_whole_file(path);
+    if (!options.map.empty() || !options.gwa.empty()) // not silently ignored
+        throw FileError(path, 0, std::string(options.map.empty() ? "--gwa" : "--map") +
+                                     " names a Doom map's part, and this is not a Doom WAD");
     if (quake::looks_like_bsp29(bytes)) {
         Zone zone = quake::load_bsp29(bytes, path);
         attach_sibling_prt(zone, path);

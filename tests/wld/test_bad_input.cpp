@@ -237,6 +237,20 @@ TEST(ZoneFile, ABrokenPortalFileBesideAMapIsANoteNotAnError)
     std::filesystem::remove_all(dir);
 }
 
+// --map and --gwa name parts of a Doom map: given for another format they are an error, not
+// silently ignored.
+TEST(ZoneFile, DoomOptionsOnAnotherFormatAreAnError)
+{
+    SHARED_DATA_OR_SKIP(map, "visdemo/example.bsp");
+    ZoneLoadOptions options;
+    options.map = "E1M1";
+    EXPECT_THROW(load_zone(map, options), FileError);
+    options.map.clear();
+    options.gwa = map;
+    EXPECT_THROW(load_zone(map, options), FileError);
+    EXPECT_NO_THROW(load_zone(map, ZoneLoadOptions{}));
+}
+
 // A directory opens as a stream on Linux and reports a size of 2^63 - 1: reading it whole once
 // threw std::bad_alloc out of every command. Each format's path (by extension or by content)
 // names the directory instead.

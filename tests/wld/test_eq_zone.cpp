@@ -292,6 +292,28 @@ TEST(EqZoneRoundTrip, WriteReadWriteIsByteIdentical)
     }
 }
 
+// Zone line i is written as zone 255, zone point i. Read back, the targets are named so and are
+// what writing again writes: no note that they are lost. A target from another format (a Quake
+// changelevel's map name) is not representable, and the note says so, quoting it.
+TEST(EqZoneRoundTrip, ZoneLineTargetsReadFromAnS3dAreNotNotedAsLost)
+{
+    const auto lost_note = [](const std::vector<std::string>& notes) {
+        for (const std::string& note : notes)
+            if (note.find("not representable") != std::string::npos)
+                return note;
+        return std::string();
+    };
+    Zone zone = gen::generate_zone({6, 3, 32.0f, false});
+    ASSERT_FALSE(zone.zone_lines.empty());
+    const Zone back = read_back(eq::write_eq_zone_archive(zone, "zone").bytes);
+    ASSERT_EQ(back.zone_lines.size(), zone.zone_lines.size());
+    EXPECT_EQ(back.zone_lines[0].target, "zone 255 point 0");
+    EXPECT_EQ(lost_note(eq::write_eq_zone_archive(back, "zone").notes), "");
+    Zone quake = back;
+    quake.zone_lines[0].target = "e1m2";
+    EXPECT_NE(lost_note(eq::write_eq_zone_archive(quake, "zone").notes).find("'e1m2'"), std::string::npos);
+}
+
 TEST(EqZoneRoundTrip, PositionsOffTheGridSettleInTheFirstWrite)
 {
     Zone a = hand_zone();

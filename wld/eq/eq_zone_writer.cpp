@@ -637,11 +637,20 @@ void note_flags(const Zone& zone, std::vector<std::string>& notes)
     if (orphan_lines)
         notes.push_back(std::to_string(orphan_lines) +
                         " regions are flagged as zone lines without one: they share an extra zone line");
-    size_t named = 0;
-    for (const ZoneLine& line : zone.zone_lines)
-        named += !line.target.empty();
-    if (named)
-        notes.push_back(std::to_string(named) + " zone-line targets (e.g. '" + zone.zone_lines.front().target +
+    // Zone line i is written as zone 255, zone point i: a target read from such a file (the reader
+    // names it "zone 255 point i") is kept; any other is not.
+    size_t lost = 0;
+    const std::string* example = nullptr;
+    for (size_t i = 0; i < zone.zone_lines.size(); ++i) {
+        const std::string& target = zone.zone_lines[i].target;
+        if (target.empty() || target == "zone 255 point " + std::to_string(i))
+            continue;
+        ++lost;
+        if (!example)
+            example = &target;
+    }
+    if (lost)
+        notes.push_back(std::to_string(lost) + " zone-line targets (e.g. '" + *example +
                         "') are not representable: zone line i is written as zone 255, zone point i");
 }
 
