@@ -82,6 +82,13 @@ void register_gen_command(CLI::App& app, int& exit_code)
         ->excludes(outdoor);
     cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
     cmd->callback([options, cell, &exit_code] {
+        // The output's kind is known before the zone is made (an outdoor bake takes minutes).
+        const auto output = options->output.empty() ? std::nullopt : zone_output_for(options->output, "");
+        if (!options->output.empty() && !output) {
+            std::fprintf(stderr, "pvscope: error: '%s': the output must end in .s3d or .obj\n", options->output.c_str());
+            exit_code = 2;
+            return;
+        }
         const auto start = std::chrono::steady_clock::now();
         gen::GenParams params = options->params;
         std::optional<ProgressBar> bar; // made on the first call: only a bake that runs shows it
@@ -122,14 +129,8 @@ void register_gen_command(CLI::App& app, int& exit_code)
         const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         print_zone_report(zone, ms, options->json);
         exit_code = 0;
-        if (options->output.empty())
+        if (!output)
             return;
-        const auto output = zone_output_for(options->output, "");
-        if (!output) {
-            std::fprintf(stderr, "pvscope: error: '%s': the output must end in .s3d or .obj\n", options->output.c_str());
-            exit_code = 2;
-            return;
-        }
         try {
             for (const std::string& note : write_zone(zone, options->output, *output))
                 std::fprintf(stderr, "note: %s\n", note.c_str());
