@@ -1,6 +1,7 @@
 // pvscope: inspector and command-line tool for visibility culling in classic 3-D worlds.
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together. The inspector
 // window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
+#include "app/arguments.h"
 #include "app/cmd_bake.h"
 #include "app/cmd_check.h"
 #include "app/cmd_why.h"
@@ -61,7 +62,9 @@ int main(int argc, char** argv)
     try {
         app.parse(arguments);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // CLI11 prints the message (or the help) and gives its own codes (105, 109, ...): every
+        // bad command line exits 2, as the docs and each command's own refusals do.
+        return app.exit(e) == 0 ? 0 : pvs::app::kExitBadArguments;
     }
     if (app.get_subcommands().empty())
         exit_code = pvs::app::launch_inspector(argv);
