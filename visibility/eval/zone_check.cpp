@@ -240,7 +240,7 @@ void check_pvs(const Zone& zone, const CheckOptions& options, const PortalSet* b
         }
         items.push_back(n.done(format("%zu of %zu directed portal neighbours missing from the rows",
                                       n.item.failed, n.item.checked)));
-        items.push_back(sky.done(format("%zu of %zu directed neighbours at sky regions missing (--sky none: sky opaque)",
+        items.push_back(sky.done(format("%zu of %zu directed neighbours at sky regions missing (a PVS made as id's vis made it, bake --sky none, sees none through sky)",
                                         sky.item.failed, sky.item.checked)));
     } else
         for (const char* name : {"pvs_neighbours", "pvs_sky_neighbours"})
