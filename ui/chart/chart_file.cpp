@@ -2,9 +2,7 @@
 
 #include "ui/chart/cairo_canvas.h"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-#include <cairo.h>
+#include "ui/chart/cairo_library.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,11 +14,13 @@ namespace pvs::ui::chart {
 
 namespace {
 
+const CairoLibrary& cairo() { return cairo_library(); }
+
 struct SurfaceDeleter {
-    void operator()(cairo_surface_t* surface) const { cairo_surface_destroy(surface); }
+    void operator()(cairo_surface_t* surface) const { cairo().surface_destroy(surface); }
 };
 struct ContextDeleter {
-    void operator()(cairo_t* context) const { cairo_destroy(context); }
+    void operator()(cairo_t* context) const { cairo().destroy(context); }
 };
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
@@ -30,19 +30,19 @@ using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 void draw_page(cairo_surface_t* surface, std::span<const ChartPoint> points, const std::string& title, uint32_t width,
                uint32_t height, const std::string& what)
 {
-    ContextPtr context(cairo_create(surface));
-    cairo_set_source_rgb(context.get(), 1, 1, 1);
-    cairo_paint(context.get());
+    ContextPtr context(cairo().create(surface));
+    cairo().set_source_rgb(context.get(), 1, 1, 1);
+    cairo().paint(context.get());
     CairoCanvas canvas(context.get());
     draw_speed_accuracy_chart(points, title, canvas, {0, 0}, {float(width), float(height)});
-    if (const cairo_status_t status = cairo_status(context.get()); status != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(what + ": drawing the chart failed: " + cairo_status_to_string(status));
+    if (const cairo_status_t status = cairo().status(context.get()); status != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(what + ": drawing the chart failed: " + cairo().status_to_string(status));
 }
 
 void check_surface(cairo_surface_t* surface, const std::string& path)
 {
-    if (const cairo_status_t status = cairo_surface_status(surface); status != CAIRO_STATUS_SUCCESS)
-        throw std::runtime_error(path + ": cannot write the chart: " + cairo_status_to_string(status));
+    if (const cairo_status_t status = cairo().surface_status(surface); status != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(path + ": cannot write the chart: " + cairo().status_to_string(status));
 }
 
 void check_size(uint32_t width, uint32_t height)
@@ -72,16 +72,16 @@ ChartFormat chart_format_for(const std::string& path)
 Image render_chart_image(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height)
 {
     check_size(width, height);
-    SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, int(width), int(height)));
+    SurfacePtr surface(cairo().image_surface_create(CAIRO_FORMAT_RGB24, int(width), int(height)));
     check_surface(surface.get(), "chart image");
     draw_page(surface.get(), points, title, width, height, "chart image");
-    cairo_surface_flush(surface.get());
+    cairo().surface_flush(surface.get());
     Image image;
     image.width = width;
     image.height = height;
     image.rgba.resize(size_t(width) * height * 4);
-    const unsigned char* data = cairo_image_surface_get_data(surface.get());
-    const size_t stride = size_t(cairo_image_surface_get_stride(surface.get()));
+    const unsigned char* data = cairo().image_surface_get_data(surface.get());
+    const size_t stride = size_t(cairo().image_surface_get_stride(surface.get()));
     for (uint32_t y = 0; y < height; ++y) {
         // RGB24 is one native-endian 32-bit word per pixel, 0xXXRRGGBB.
         const auto* row = reinterpret_cast<const uint32_t*>(data + y * stride);
@@ -107,11 +107,11 @@ void write_chart_file(std::span<const ChartPoint> points, const std::string& tit
     case ChartFormat::Svg:
     case ChartFormat::Pdf: {
         check_size(width, height);
-        SurfacePtr surface(format == ChartFormat::Svg ? cairo_svg_surface_create(path.c_str(), width, height)
-                                                      : cairo_pdf_surface_create(path.c_str(), width, height));
+        SurfacePtr surface(format == ChartFormat::Svg ? cairo().svg_surface_create(path.c_str(), width, height)
+                                                      : cairo().pdf_surface_create(path.c_str(), width, height));
         check_surface(surface.get(), path);
         draw_page(surface.get(), points, title, width, height, path);
-        cairo_surface_finish(surface.get()); // writes and closes the file: errors show up here
+        cairo().surface_finish(surface.get()); // writes and closes the file: errors show up here
         check_surface(surface.get(), path);
         return;
     }
