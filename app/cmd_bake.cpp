@@ -375,15 +375,12 @@ void write_output(const BakeOptions& o, const Input& in, const Pvs& pvs, std::FI
     write_options.quake_ambient = o.ambient;
     write_options.ambient = o.ambient_classes;
     write_options.phs = o.phs_rule == "ericw" ? quake2::PhsRule::EricwTools : quake2::PhsRule::Quake2;
+    write_options.shown_path = o.output_name;
     const PvsWriteback written =
         write_pvs_in_zone_format(reloaded ? *reloaded : in.zone, ZoneLoadOptions{}, pvs, o.output, write_options);
     for (const std::string& note : written.notes)
         std::fprintf(err, "note: %s\n", note.c_str());
-    std::string summary = written.summary;
-    if (!o.output_name.empty())
-        if (const size_t at = summary.find(o.output); at != std::string::npos)
-            summary.replace(at, o.output.size(), o.output_name);
-    std::fprintf(err, "%s\n", summary.c_str());
+    std::fprintf(err, "%s\n", written.summary.c_str());
 }
 
 nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun& run, double load_seconds,

@@ -155,7 +155,7 @@ std::vector<std::vector<WalkRow>> run_accuracy_walks(const Zone& zone, std::span
     const SightCheck sight_check(zone, options.sky);
     // Zones with translucent faces get a second ID picture without them: the faces seen through.
     const std::vector<uint8_t> translucent = translucent_face_mask(zone);
-    const bool any_translucent = std::find(translucent.begin(), translucent.end(), 1) != translucent.end();
+    const bool any_translucent = !translucent.empty(); // translucent_face_mask: empty when none is
     std::vector<uint32_t> all_regions(zone.region_count());
     for (uint32_t r = 0; r < all_regions.size(); ++r)
         all_regions[r] = r;

@@ -30,7 +30,7 @@ PvsWriteback write_hepvs_of(const Zone& zone, const Pvs& pvs, const std::string&
     copy.baked_pvs = pvs;
     const HepvsFile hepvs = hepvs_from_zone(copy);
     write_whole_file(out_path, write_hepvs(hepvs));
-    return {"wrote " + out_path + ": " + std::to_string(hepvs.counts.x) + " x " + std::to_string(hepvs.counts.y) +
+    return {": " + std::to_string(hepvs.counts.x) + " x " + std::to_string(hepvs.counts.y) +
                 " x " + std::to_string(hepvs.counts.z) + " cells, " + std::to_string(hepvs.names.size()) + " objects",
             {}};
 }
@@ -40,15 +40,14 @@ PvsWriteback write_gl_pvs_of(const Zone& zone, const ZoneLoadOptions& load, cons
     const doom::DoomMap map = doom::open_doom_map(zone.source.path, load.map, load.gwa).map;
     const doom::WadFile gl = doom::read_wad(map.source.gl_path);
     write_whole_file(out_path, doom::with_gl_pvs(gl, map.source.gl_marker, doom::gl_pvs_lump(pvs)));
-    return {"wrote " + out_path + ": " + map.source.gl_path + " with GL_PVS (" + std::to_string(pvs.region_count()) +
+    return {": " + map.source.gl_path + " with GL_PVS (" + std::to_string(pvs.region_count()) +
                 " subsectors)",
             {}};
 }
 
-} // namespace
-
-PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,
-                                      const std::string& out_path, const PvsWriteOptions& options)
+// The writer of the zone's format; the summary is what follows "wrote FILE".
+PvsWriteback write_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,
+                                  const std::string& out_path, const PvsWriteOptions& options)
 {
     const std::string& path = zone.source.path;
     std::error_code ec;
@@ -71,7 +70,7 @@ PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& l
                                        ? ", ambient sounds on " + std::to_string(with_sound) + " of " +
                                              std::to_string(ambient.size()) + " leaves"
                                        : ", ambient sounds kept as they were";
-        return {"wrote " + out_path + ": " + std::to_string(stats.rows) + " rows, " + std::to_string(stats.unique_rows) +
+        return {": " + std::to_string(stats.rows) + " rows, " + std::to_string(stats.unique_rows) +
                     " distinct, " + std::to_string(stats.visdata_bytes) + " bytes of visdata" + sounds,
                 {}};
     }
@@ -81,7 +80,7 @@ PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& l
         char line[160];
         std::snprintf(line, sizeof line, ": %u clusters (the leaves' rows ORed per cluster), mean %.1f visible, %.1f hearable",
                       q.clusters, q.mean_visible, q.mean_hearable);
-        return {"wrote " + out_path + line, {}};
+        return {line, {}};
     }
     if (doom::looks_like_wad(bytes))
         return write_gl_pvs_of(zone, load, pvs, out_path);
@@ -90,10 +89,19 @@ PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& l
         copy.baked_pvs = pvs;
         PvsWriteback out;
         out.notes = write_zone(copy, out_path, ZoneOutput::S3d);
-        out.summary = "wrote " + out_path;
         return out;
     }
     throw FileError(path, 0, "cannot write a PVS back into this format");
+}
+
+} // namespace
+
+PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,
+                                      const std::string& out_path, const PvsWriteOptions& options)
+{
+    PvsWriteback written = write_in_zone_format(zone, load, pvs, out_path, options);
+    written.summary = "wrote " + (options.shown_path.empty() ? out_path : options.shown_path) + written.summary;
+    return written;
 }
 
 } // namespace pvs

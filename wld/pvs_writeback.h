@@ -30,6 +30,9 @@ struct PvsWriteOptions {
     bool quake_ambient = true;          // Quake: write ambient sound levels from the new rows
     quake::AmbientOptions ambient;      // which texture classes count (vis's -noambient* switches)
     quake2::PhsRule phs = quake2::PhsRule::Quake2; // Quake 2: which PHS is written (quake2/phs.h)
+    // How the summary names the file written, when not out_path: a file written under a
+    // temporary name and then renamed over the map (pvscope vis) is named by the map.
+    std::string shown_path;
 };
 
 struct PvsWriteback {

@@ -296,33 +296,35 @@ void add_normals(WldMesh& m)
     }
 }
 
+// The range of a face's uvs (indices out of range are skipped: the writer refuses them).
+struct UvRange {
+    glm::vec2 lo{std::numeric_limits<float>::max()}, hi{std::numeric_limits<float>::lowest()};
+};
+UvRange face_uv_range(const Mesh& mesh, const Face& face)
+{
+    UvRange range;
+    for (size_t i = size_t(face.first_triangle) * 3; i < size_t(face.first_triangle + face.triangle_count) * 3; ++i)
+        if (i < mesh.indices.size() && mesh.indices[i] < mesh.uvs.size()) {
+            range.lo = glm::min(range.lo, mesh.uvs[mesh.indices[i]]);
+            range.hi = glm::max(range.hi, mesh.uvs[mesh.indices[i]]);
+        }
+    return range;
+}
+
 // The whole number of texture repeats a face's uvs move by so that the old form (i16 / 256,
 // about [-128, 128)) holds them: 0 when they fit as they are (so a written file writes back
-// unchanged), else the rounded middle of their range; nothing when no whole shift makes them fit
-// (`axis`: the first axis that does not, `lo`/`hi` its range). The picture is the same.
-std::optional<glm::vec2> old_form_uv_shift(const Zone& zone, const Face& face, int* axis = nullptr,
-                                           glm::vec2* range_lo = nullptr, glm::vec2* range_hi = nullptr)
+// unchanged), else the rounded middle of their range; nothing when no whole shift makes them
+// fit. The picture is the same.
+std::optional<glm::vec2> old_form_uv_shift(const UvRange& range)
 {
-    glm::vec2 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-    for (uint32_t i = face.first_triangle * 3; i < (face.first_triangle + face.triangle_count) * 3; ++i) {
-        lo = glm::min(lo, zone.mesh.uvs[zone.mesh.indices[i]]);
-        hi = glm::max(hi, zone.mesh.uvs[zone.mesh.indices[i]]);
-    }
     glm::vec2 shift(0.0f);
     for (int k = 0; k < 2; ++k) {
-        if (fits_i16_uv(lo[k]) && fits_i16_uv(hi[k]))
-            continue;
-        const double middle = std::round((double{lo[k]} + double{hi[k]}) * 0.5);
+        if (range.lo[k] > range.hi[k] || (fits_i16_uv(range.lo[k]) && fits_i16_uv(range.hi[k])))
+            continue; // no uv, or they fit
+        const double middle = std::round((double{range.lo[k]} + double{range.hi[k]}) * 0.5);
         shift[k] = static_cast<float>(middle);
-        if (!std::isfinite(middle) || !fits_i16_uv(lo[k] - shift[k]) || !fits_i16_uv(hi[k] - shift[k])) {
-            if (axis)
-                *axis = k;
-            if (range_lo)
-                *range_lo = lo;
-            if (range_hi)
-                *range_hi = hi;
+        if (!std::isfinite(middle) || !fits_i16_uv(range.lo[k] - shift[k]) || !fits_i16_uv(range.hi[k] - shift[k]))
             return std::nullopt;
-        }
     }
     return shift;
 }
@@ -331,12 +333,12 @@ glm::vec2 uv_shift(const Zone& zone, const Face& face, WldUvForm form, uint32_t 
 {
     if (form == WldUvForm::F32 || zone.mesh.uvs.empty())
         return glm::vec2(0.0f);
-    int k = 0;
-    glm::vec2 lo, hi;
-    const std::optional<glm::vec2> shift = old_form_uv_shift(zone, face, &k, &lo, &hi);
+    const UvRange range = face_uv_range(zone.mesh, face);
+    const std::optional<glm::vec2> shift = old_form_uv_shift(range);
     if (!shift)
-        refuse("face " + std::to_string(face_index) + "'s uvs span [" + std::to_string(lo[k]) + ", " +
-               std::to_string(hi[k]) + "]: more than the old WLD form's 256 repeats (write the new version)");
+        refuse("face " + std::to_string(face_index) + "'s uvs span [" + std::to_string(range.lo.x) + ", " +
+               std::to_string(range.hi.x) + "] x [" + std::to_string(range.lo.y) + ", " + std::to_string(range.hi.y) +
+               "]: more than the old WLD form's 256 repeats (write the new version)");
     return *shift;
 }
 
@@ -767,7 +769,7 @@ std::optional<uint32_t> face_beyond_old_wld_form(const Zone& zone)
     if (zone.mesh.uvs.empty())
         return std::nullopt;
     for (uint32_t f = 0; f < zone.mesh.faces.size(); ++f)
-        if (!old_form_uv_shift(zone, zone.mesh.faces[f]))
+        if (!old_form_uv_shift(face_uv_range(zone.mesh, zone.mesh.faces[f])))
             return f;
     return std::nullopt;
 }
