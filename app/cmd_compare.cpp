@@ -38,12 +38,12 @@ std::string csv_text(const ui::CompareResult& result)
 {
     std::ostringstream out;
     out << "method,params,bound,wall_s,cpu_s,peak_mib,estimate_mib,pvs_bytes,mean_visible,missing_bits,excess_bits,"
-           "rows_missing_bits,popping_pixels,crack_pixels,unknown_pixels,grazing_pixels,triangle_overdraw\n";
+           "rows_missing_bits,popping_pixels,crack_pixels,unknown_pixels,grazing_pixels,unfaced_pixels,triangle_overdraw\n";
     for (const ui::CompareRow& r : result.rows)
         out << r.method << ',' << r.params << ',' << bound_name(r.bound) << ',' << r.wall_s << ',' << r.cpu_s << ','
             << r.peak_mib << ',' << r.estimate_mib << ',' << r.pvs_bytes << ',' << r.mean_visible << ','
             << r.missing_bits << ',' << r.excess_bits << ',' << r.rows_missing_bits << ',' << r.popping_pixels << ','
-            << r.crack_pixels << ',' << r.unknown_pixels << ',' << r.grazing_pixels << ',' << r.triangle_overdraw << '\n';
+            << r.crack_pixels << ',' << r.unknown_pixels << ',' << r.grazing_pixels << ',' << r.unfaced_pixels << ',' << r.triangle_overdraw << '\n';
     return out.str();
 }
 
@@ -69,6 +69,7 @@ nlohmann::json json_report(const CompareCommandOptions& o, const Zone& zone, con
                         {"missing_pairs", r.missing_pairs},
                         {"worst_overdraw_pairs", worst_pairs_json(r.worst_overdraw_pairs)},
                         {"grazing_pixels", r.grazing_pixels},
+                        {"unfaced_pixels", r.unfaced_pixels},
                         {"triangle_overdraw", r.triangle_overdraw},
                         {"summary", r.summary}});
     return {{"input", o.input},

@@ -83,7 +83,7 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
         throw FileError(file, 0, "cannot create the CSV file");
     out << "camera,x,y,z,yaw,pitch,region,camera_place,lookup_us,pvs_us,distance_us,frustum_us,regions_total,"
            "regions_after_pvs,regions_after_distance,regions_drawn,triangles_total,triangles_after_pvs,triangles_drawn,render_ms,covered_pixels,"
-           "raster_popping_pixels,popping_cracks,popping_unknown,popping_grazing,popping_unlisted,popping_confirmed,popping_regions,needed_triangles,"
+           "raster_popping_pixels,popping_cracks,popping_unknown,popping_grazing,popping_unfaced,popping_unlisted,popping_confirmed,popping_regions,needed_triangles,"
            "triangle_overdraw,region_overdraw\n";
     const char* places[] = {"region", "solid", "outside"};
     for (size_t i = 0; i < rows.size(); ++i) {
@@ -101,7 +101,7 @@ void write_csv(const std::string& file, const std::vector<ui::WalkRow>& rows)
             << r.cull.regions_after_distance << ',' << r.cull.regions_after_frustum
             << ',' << r.cull.triangles_total << ',' << r.cull.triangles_after_pvs << ','
             << r.cull.triangles_after_frustum << ',' << r.render_ms << ',' << r.accuracy.covered_pixels << ','
-            << r.accuracy.popping_pixels << ',' << r.popping_cracks << ',' << r.popping_unknown << ',' << r.popping_grazing << ',' << r.popping_unlisted << ',' << r.popping_confirmed << ','
+            << r.accuracy.popping_pixels << ',' << r.popping_cracks << ',' << r.popping_unknown << ',' << r.popping_grazing << ',' << r.popping_unfaced << ',' << r.popping_unlisted << ',' << r.popping_confirmed << ','
             << popping_regions << ',' << r.accuracy.needed_triangles << ',' << r.accuracy.triangle_overdraw() << ','
             << r.accuracy.region_overdraw() << '\n';
     }
@@ -111,7 +111,7 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
 {
     std::vector<double> cull_us, distance_us, after_pvs, after_distance, regions, triangles, tri_over, region_over,
         render_ms;
-    uint64_t raster_popping = 0, confirmed = 0, cracks = 0, unknown = 0, grazing = 0, unlisted = 0, popping_cameras = 0,
+    uint64_t raster_popping = 0, confirmed = 0, cracks = 0, unknown = 0, grazing = 0, unfaced = 0, unlisted = 0, popping_cameras = 0,
              outside = 0;
     for (const ui::WalkRow& r : rows) {
         cull_us.push_back(r.cull.cull_us());
@@ -128,6 +128,7 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
         cracks += r.popping_cracks;
         unknown += r.popping_unknown;
         grazing += r.popping_grazing;
+        unfaced += r.popping_unfaced;
         unlisted += r.popping_unlisted;
         popping_cameras += r.popping_confirmed > 0;
         outside += r.cull.camera != CameraPlace::InRegion;
@@ -153,12 +154,14 @@ void print_summary(const std::vector<ui::WalkRow>& rows, const WalkCommandOption
     std::printf("  popping: %llu pixels confirmed (sight line open in the BSP tree, or to the face first in the mesh) on %llu cameras; %llu raster "
                 "pixels, %llu of them cracks (sight line blocked by a wall: a gap between triangles), %llu unknown "
                 "(the sight check cannot decide: a face seen edge-on, no tree), %llu grazing "
-                "(open by less than %.2f units past a wall's edge), %llu unlisted (seen from a kept region that "
-                "does not list the face)\n",
+                "(open by less than %.2f units past a wall's edge), %llu unfaced (seen across a boundary the "
+                "map's vis counts opaque, where no face is: the engine shows a hole), %llu unlisted (seen from a kept "
+                "region that does not list the face)\n",
                 static_cast<unsigned long long>(confirmed), static_cast<unsigned long long>(popping_cameras),
                 static_cast<unsigned long long>(raster_popping), static_cast<unsigned long long>(cracks),
                 static_cast<unsigned long long>(unknown),
-                static_cast<unsigned long long>(grazing), kSightMargin, static_cast<unsigned long long>(unlisted));
+                static_cast<unsigned long long>(grazing), kSightMargin, static_cast<unsigned long long>(unfaced),
+                static_cast<unsigned long long>(unlisted));
     std::vector<size_t> order(rows.size());
     for (size_t i = 0; i < order.size(); ++i)
         order[i] = i;

@@ -89,7 +89,7 @@ private:
     TreeTracer::Scratch scratch_;
 };
 
-// Splits the raster popping pixels into confirmed, unlisted, grazing, cracks and unknown. A
+// Splits the raster popping pixels into confirmed, unlisted, grazing, unfaced, cracks and unknown. A
 // pixel pops by the face it shows, else by the face seen through it (`behind`, may be empty).
 void confirm_popping(const FaceRegions& face_regions, uint32_t width, const std::vector<int32_t>& face_ids,
                      const std::vector<int32_t>& behind, const std::vector<uint8_t>& region_drawn,
@@ -118,6 +118,10 @@ void confirm_popping(const FaceRegions& face_regions, uint32_t width, const std:
         const SightResult& sight = sights.at(x, y, uint32_t(face), layer);
         if (sight.sight == Sight::Grazing) {
             ++row.popping_grazing;
+            continue;
+        }
+        if (sight.sight == Sight::Unfaced) {
+            ++row.popping_unfaced;
             continue;
         }
         if (sight.sight == Sight::Unknown) {

@@ -7,7 +7,9 @@
 // zone's geometry (visibility/eval/sight_check.h: traced through the BSP tree's leaves). A
 // rasteriser shows, here and there, a pixel of a face behind a crack between two triangles of a
 // wall (T-junction gaps); those pixels are Blocked by the wall's solid leaf and are counted apart
-// as cracks; pixels the check cannot decide (no tree, a face seen edge-on) are counted apart as
+// as cracks; pixels seen across a boundary the zone's vis counts opaque by its content rule but
+// no face closes (Quake 2: translucent slime against plain slime) are "unfaced": the raster shows
+// what is beyond, the game's engine draws a hole, no PVS of that rule owes it; pixels the check cannot decide (no tree, a face seen edge-on) are counted apart as
 // unknown. Pixels whose
 // line is open but passes within kSightMargin of a wall's edge are grazing, counted apart too.
 // A confirmed pixel's line ends in a region the culler dropped (the PVS's failure); an open line
@@ -50,6 +52,8 @@ struct WalkRow {
                                     // face no kept region lists: the zone's face lists, not the PVS
     uint64_t popping_grazing = 0;   // raster popping pixels whose sight line is open by less than
                                     // kSightMargin (sight_check.h): hair-thin lines vis drops
+    uint64_t popping_unfaced = 0;   // raster popping pixels seen across a boundary the content rule
+                                    // makes opaque but no face closes (Sight::Unfaced): the map's hole
     // Regions the confirmed sight lines end in (where the popped faces were seen), ascending:
     // each must be in the PVS row of the camera's region and is not.
     std::vector<uint32_t> confirmed_regions;

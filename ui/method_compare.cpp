@@ -154,6 +154,7 @@ void measure_walk(const Zone& zone, const CompareOptions& o, CompareResult& resu
             row.crack_pixels += w.popping_cracks;
             row.unknown_pixels += w.popping_unknown;
             row.grazing_pixels += w.popping_grazing;
+            row.unfaced_pixels += w.popping_unfaced;
             overdraw += w.accuracy.triangle_overdraw();
         }
         row.triangle_overdraw = walks[p].empty() ? 0.0 : overdraw / double(walks[p].size());

@@ -77,6 +77,7 @@ struct CompareRow {
     uint64_t crack_pixels = 0;      // raster popping the trace rejected (blocked by a wall)
     uint64_t unknown_pixels = 0;    // raster popping the trace cannot decide (a face seen edge-on, no tree)
     uint64_t grazing_pixels = 0;    // raster popping open only by less than kSightMargin
+    uint64_t unfaced_pixels = 0;    // raster popping across a boundary the content rule makes opaque, no face there
     double triangle_overdraw = 0;   // mean over cameras (drawn / needed triangles)
     std::string summary;
     std::optional<Pvs> pvs;         // the rows (none: empty), for the panel to cull with

@@ -105,7 +105,7 @@ TEST_F(CompareCommand, WritesTableCsvJsonAndCharts)
     EXPECT_NE(out_.find("portal-fast"), std::string::npos) << out_;
     const std::string csv = read_text(o.csv);
     EXPECT_EQ(csv.rfind("method,params,bound,wall_s,cpu_s,peak_mib,estimate_mib,pvs_bytes,mean_visible,missing_bits,"
-                        "excess_bits,rows_missing_bits,popping_pixels,crack_pixels,unknown_pixels,grazing_pixels,triangle_overdraw\n",
+                        "excess_bits,rows_missing_bits,popping_pixels,crack_pixels,unknown_pixels,grazing_pixels,unfaced_pixels,triangle_overdraw\n",
                         0),
               0u);
     const size_t lines = size_t(std::count(csv.begin(), csv.end(), '\n'));

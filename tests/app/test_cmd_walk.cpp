@@ -78,7 +78,8 @@ TEST_F(WalkCommand, RowsAgreeWithTheZonesOwnPvs)
         EXPECT_EQ(number(r, "regions_total"), zone.region_count());
         EXPECT_EQ(number(r, "popping_confirmed"), 0u) << "portal-full is conservative";
         EXPECT_EQ(number(r, "raster_popping_pixels"), number(r, "popping_cracks") + number(r, "popping_unknown") +
-                                                          number(r, "popping_grazing") + number(r, "popping_unlisted") +
+                                                          number(r, "popping_grazing") + number(r, "popping_unfaced") +
+                                                          number(r, "popping_unlisted") +
                                                           number(r, "popping_confirmed"));
         if (r.at("camera_place") != "region")
             continue;

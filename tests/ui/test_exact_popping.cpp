@@ -9,14 +9,24 @@
 //   confirmed popping.
 //   Open: the same planes with the slab open (region 1 spans x > 0), no wall faces: 0 sees 1.
 //   With the bit 0 -> 1 removed from a full PVS, the far wall pops, confirmed, in region 1.
+//   Plain water: Open with region 1 plain water under Quake 2's content rule (media.h): air does
+//   not see into it, and no face lies between. The raster shows region 1's far wall; the game's
+//   vis and engine do not. Every such pixel is "unfaced", neither popping nor a crack; a water
+//   surface with a 1-unit gap closes the boundary except in the gap, and a line through the
+//   surface's triangles (or within kUnfacedMargin of them) is blocked by it, not unfaced.
 //   Glass: Open with a pane in region 0 (x = -10) in front of the camera. Translucent, it hides
 //   nothing: the far wall pops behind it as around it; opaque, only around it.
 #include "ui/accuracy_walk.h"
 
+#include "tests/support/test_data.h"
+#include "visibility/eval/camera_set.h"
+
 #include "visibility/bit_row.h"
+#include "visibility/eval/sight_check.h"
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
 #include <vector>
 
 namespace pvs::ui {
@@ -106,6 +116,7 @@ TEST(ExactPopping, ACrackInTheMeshIsNotPopping)
     EXPECT_EQ(rows[0].popping_confirmed, 0u) << "the slab is solid in the tree: no sight line is open";
     EXPECT_EQ(rows[0].popping_cracks, rows[0].accuracy.popping_pixels);
     EXPECT_EQ(rows[0].popping_unknown, 0u) << "every crack pixel's sight line is decided: blocked";
+    EXPECT_EQ(rows[0].popping_unfaced, 0u) << "a wall blocks the line, not the content rule";
     EXPECT_TRUE(rows[0].confirmed_regions.empty());
 }
 
@@ -126,7 +137,7 @@ TEST(ExactPopping, ARemovedBitPopsConfirmedWithItsRegion)
     EXPECT_EQ(rows[0].confirmed_regions, std::vector<uint32_t>{1});
     // Every raster popping pixel lands in exactly one class.
     EXPECT_EQ(rows[0].popping_confirmed + rows[0].popping_cracks + rows[0].popping_unknown + rows[0].popping_grazing +
-                  rows[0].popping_unlisted,
+                  rows[0].popping_unfaced + rows[0].popping_unlisted,
               rows[0].accuracy.popping_pixels);
 }
 
@@ -167,6 +178,82 @@ TEST(ExactPopping, AFaceSeenThroughGlassPopsAsAnyOther)
 
     const Pvs full = pvs_of({{0, 1}, {0, 1}});
     EXPECT_EQ(run_accuracy_walk(glass, &full, cameras, options_640x480())[0].accuracy.popping_pixels, 0u);
+}
+
+// Quake 2 contents (Region::vis_contents): air, and plain water (not translucent).
+constexpr uint16_t kQuake2Air = 0x0000;
+constexpr uint16_t kQuake2PlainWater = 0x2020;
+
+Zone air_then_plain_water()
+{
+    Zone zone = two_rooms(false);
+    zone.regions[0].vis_contents = kQuake2Air;
+    zone.regions[1].vis_contents = kQuake2PlainWater;
+    return zone;
+}
+
+TEST(ExactPopping, SeenIntoPlainWaterWhereNoFaceIsIsUnfacedNotACrack)
+{
+    const Zone zone = air_then_plain_water();
+    const Pvs apart = pvs_of({{0}, {1}}); // the content rule's PVS: air does not see the water
+    const std::vector<Camera> cameras{camera_facing_the_wall()};
+    const std::vector<WalkRow> rows = run_accuracy_walk(zone, &apart, cameras, options_640x480());
+    ASSERT_EQ(rows.size(), 1u);
+    EXPECT_GT(rows[0].accuracy.popping_pixels, 50000u) << "the raster sees region 1's far wall: nothing is in between";
+    EXPECT_EQ(rows[0].popping_unfaced, rows[0].accuracy.popping_pixels);
+    EXPECT_EQ(rows[0].popping_cracks, 0u) << "no wall and no face blocks these lines: they are not cracks";
+    EXPECT_EQ(rows[0].popping_confirmed, 0u) << "the content rule blocks them: no PVS of that rule owes them";
+}
+
+TEST(ExactPopping, AWaterSurfaceClosesTheBoundaryButWhereItHasAGap)
+{
+    Zone zone = air_then_plain_water();
+    // The water's surface at x = 0, listed by region 0, in two quads with y in (-0.5, 0.5) open.
+    const uint32_t below = uint32_t(zone.mesh.faces.size());
+    add_wall(zone, 0.0f, -50.0f, -0.5f);
+    add_wall(zone, 0.0f, 0.5f, 50.0f);
+    zone.region_faces.insert(zone.region_faces.begin(), {below, below + 1});
+    zone.region_face_offsets[1] += 2;
+    zone.region_face_offsets[2] += 2;
+    const uint32_t far_wall = 0;
+    ASSERT_EQ(zone.region_faces[2], far_wall);
+
+    const SightCheck check(zone);
+    TreeTracer::Scratch scratch;
+    const glm::dvec3 eye(-40, 0, 0);
+    const auto sight_at_y = [&](double y) {
+        const glm::dvec3 direction = glm::normalize(glm::dvec3(100, y, 0) - eye); // to the far wall at (100, y, 0)
+        return check.face_along_ray(eye, direction, far_wall, scratch).sight;
+    };
+    EXPECT_EQ(sight_at_y(0.0), Sight::Unfaced) << "the middle of the gap: no face within the margin";
+    EXPECT_EQ(sight_at_y(-10.0 * 140.0 / 40.0), Sight::Blocked) << "through the surface's lower quad (y = -10 at x = 0)";
+    // Crossing x = 0 at y = -0.45: 0.05 from the lower quad's edge, inside kUnfacedMargin.
+    EXPECT_EQ(sight_at_y(-0.45 * 140.0 / 40.0), Sight::Blocked) << "a hair from the surface's edge: a crack";
+    EXPECT_EQ(sight_at_y(-0.3 * 140.0 / 40.0), Sight::Unfaced) << "0.2 from the edge: a real hole in the surface";
+}
+
+// ericw's q2_liquids puts translucent liquid brushes against plain ones of the same liquid: no
+// face lies between them, and Quake 2's vis (ericw's PVS, which the reference equals there) does
+// not see across. The raster does. Those pixels were once all counted as cracks (98 % of the
+// raster popping over 100 cameras); they are holes in the map, not gaps between triangles.
+TEST(ExactPopping, Quake2LiquidsWithEricwsPvsShowHolesNotCracks)
+{
+    SHARED_DATA_OR_SKIP(path, "modern-quake/q2/q2_liquids.ericw-vis.bsp");
+    const Zone& zone = *test::shared_zone("modern-quake/q2/q2_liquids.ericw-vis.bsp");
+    ASSERT_TRUE(zone.baked_pvs);
+    const std::vector<Camera> cameras = random_cameras_in_regions(zone, 100, 1, Camera{});
+    ASSERT_EQ(cameras.size(), 100u);
+    uint64_t popping = 0, unfaced = 0, cracks = 0, confirmed = 0;
+    for (const WalkRow& row : run_accuracy_walk(zone, &*zone.baked_pvs, cameras, WalkOptions{})) {
+        popping += row.accuracy.popping_pixels;
+        unfaced += row.popping_unfaced;
+        cracks += row.popping_cracks;
+        confirmed += row.popping_confirmed;
+    }
+    ASSERT_GT(popping, 10000u) << "the raster sees across the plain liquids' faceless boundaries";
+    EXPECT_EQ(confirmed, 0u);
+    EXPECT_GT(unfaced, popping * 9 / 10);
+    EXPECT_LT(cracks, popping / 50) << "cracks are single pixels at triangle edges, not whole areas";
 }
 
 } // namespace

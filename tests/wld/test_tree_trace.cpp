@@ -153,6 +153,7 @@ TEST(TreeTrace, SolidAndOutsideLeavesBlock)
     EXPECT_TRUE(end.blocked);
     EXPECT_DOUBLE_EQ(end.t, 5.0);
     EXPECT_EQ(end.last_region, 0);
+    EXPECT_EQ(end.refused_region, -1) << "a wall, not the content rule";
     EXPECT_EQ(regions_of(Slab(kLeafOutside, 0, 0).zone, SkyPortals::SkyToSky, &end), std::vector<int32_t>{0});
     EXPECT_TRUE(end.blocked);
     EXPECT_EQ(regions_of(Slab(7, 0, 0).zone, SkyPortals::SkyToSky, &end), std::vector<int32_t>{0})
@@ -171,6 +172,7 @@ TEST(TreeTrace, MediaFollowTheContentRule)
     // Sky: opaque from outside by default, translucent with All, opaque to everything with None.
     EXPECT_EQ(regions_of(Slab(2, 0, 0, kRegionSky).zone, SkyPortals::SkyToSky, &end), std::vector<int32_t>{0});
     EXPECT_TRUE(end.blocked);
+    EXPECT_EQ(end.refused_region, 2) << "the sky leaf's region, refused by the content rule";
     EXPECT_EQ(regions_of(Slab(2, 0, 0, kRegionSky).zone, SkyPortals::All, &end).size(), 3u);
     EXPECT_EQ(regions_of(Slab(2, kRegionSky, kRegionSky, kRegionSky).zone, SkyPortals::SkyToSky, &end).size(), 3u);
     EXPECT_EQ(regions_of(Slab(2, kRegionSky, kRegionSky, kRegionSky).zone, SkyPortals::None, &end),

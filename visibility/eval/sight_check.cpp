@@ -7,7 +7,7 @@
 
 namespace pvs {
 
-SightCheck::SightCheck(const Zone& zone, SkyPortals sky) : tracer_(zone.tree, zone.regions, sky)
+SightCheck::SightCheck(const Zone& zone, SkyPortals sky) : zone_(&zone), tracer_(zone.tree, zone.regions, sky)
 {
     const Mesh& mesh = zone.mesh;
     planes_.resize(mesh.faces.size());
@@ -75,9 +75,73 @@ SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& 
     result.hit_distance = t_hit;
     result.sight = end.blocked ? Sight::Blocked : Sight::Open;
     result.end_region = end.blocked ? -1 : end.last_region;
+    if (end.blocked && end.refused_region >= 0 && end.last_region >= 0 &&
+        !face_closes(eye, direction, end.t, end.last_region, end.refused_region, face))
+        result.sight = Sight::Unfaced;
     if (result.sight == Sight::Open && !tracer_.open_beam(eye, direction, length, kSightMargin, scratch))
         result.sight = Sight::Grazing;
     return result;
+}
+
+bool SightCheck::face_closes(const glm::dvec3& eye, const glm::dvec3& direction, double t, int32_t region_a,
+                             int32_t region_b, uint32_t seen_face) const
+{
+    for (const int32_t region : {region_a, region_b}) {
+        if (size_t(region) >= zone_->region_count())
+            continue;
+        for (const uint32_t f : zone_->faces_of_region(uint32_t(region))) {
+            if (f >= zone_->mesh.faces.size() || f == seen_face)
+                continue;
+            const Face& face = zone_->mesh.faces[f];
+            for (uint32_t triangle = face.first_triangle; triangle < face.first_triangle + face.triangle_count;
+                 ++triangle)
+                if (ray_crosses_triangle(triangle, eye, direction, t))
+                    return true;
+        }
+    }
+    return false;
+}
+
+// The ray meets the triangle's plane within kUnfacedMargin of t (along the ray), at a point on
+// the inner side of each edge's line moved out by the margin (a little more than the margin near
+// the corners: it errs towards "closed"). A face across the line's way, not one beside it: a wall
+// the crossing point lies near but the ray runs along does not close the boundary.
+bool SightCheck::ray_crosses_triangle(uint32_t triangle, const glm::dvec3& eye, const glm::dvec3& direction,
+                                      double t) const
+{
+    const Mesh& mesh = zone_->mesh;
+    if (3 * size_t(triangle) + 2 >= mesh.indices.size())
+        return false;
+    glm::dvec3 corner[3];
+    for (int i = 0; i < 3; ++i) {
+        const uint32_t index = mesh.indices[3 * size_t(triangle) + size_t(i)];
+        if (index >= mesh.positions.size())
+            return false;
+        corner[i] = glm::dvec3(mesh.positions[index]);
+    }
+    const glm::dvec3 normal = glm::cross(corner[1] - corner[0], corner[2] - corner[0]);
+    const double area2 = glm::length(normal);
+    if (!(area2 > 1e-9))
+        return false;
+    const glm::dvec3 n = normal / area2;
+    const double facing = glm::dot(n, direction);
+    if (facing == 0.0)
+        return false;
+    const double t_plane = glm::dot(n, corner[0] - eye) / facing;
+    if (!(std::abs(t_plane - t) <= kUnfacedMargin))
+        return false;
+    const glm::dvec3 point = eye + t_plane * direction;
+    for (int i = 0; i < 3; ++i) {
+        const glm::dvec3& a = corner[i];
+        const glm::dvec3 edge = corner[(i + 1) % 3] - a;
+        const double length = glm::length(edge);
+        if (!(length > 1e-9))
+            continue;
+        const glm::dvec3 inward = glm::cross(n, edge) / length; // counter-clockwise about n: inward
+        if (glm::dot(inward, point - a) < -kUnfacedMargin)
+            return false;
+    }
+    return true;
 }
 
 } // namespace pvs

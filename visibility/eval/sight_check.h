@@ -23,13 +23,22 @@
 // from the front, and Blocked when another face is in front of it (the raster showed a face
 // through a crack); end_region is then the region (object) listing the face. No Grazing there.
 //
+// Unfaced: Blocked, but by the content rule, not by a wall: the segment reaches a region its
+// medium does not see into (media.h; Quake 2: translucent slime against plain slime, air against
+// plain water) where the ray crosses no face of either region (none within kUnfacedMargin of the
+// crossing along the ray, inside a triangle; the face the pixel shows does not count: a wall met
+// just past the crossing is no cover for it). Light would cross there and so does the raster, but
+// the game's vis counts the boundary opaque and the engine draws a hole; the line is
+// not one any PVS of that rule owes, and not a crack either. A crack in a face that does close such
+// a boundary (a sky or liquid surface) stays Blocked.
+//
 // Unknown: the zone has neither tree nor mesh, the ray does not meet the face's plane in front of the eye
 // (a face seen edge-on, or a pixel centre just off its face), or the face has no area. Callers
 // count Unknown with the cracks: it is never confirmed.
 //
 // Open gives end_region: the region the segment ends in, the one the face belongs to there,
 // which a PVS row of the eye's region must hold. Thread-safe (const); each thread passes its
-// own scratch.
+// own scratch. Borrows the zone, which must outlive the check.
 #pragma once
 
 #include "visibility/portal/media.h"
@@ -47,8 +56,11 @@ namespace pvs {
 inline constexpr double kSightBackoff = 0.2;
 inline constexpr double kSightBackoffMax = 2.0;
 inline constexpr double kSightMargin = kBeamMargin; // the reference's margin (tree_trace.h)
+// How near a face must come to a content-rule crossing to close it (zone units): well over
+// Quake's 0.1 vertex noise, so a T-junction gap in a closing face is still a crack.
+inline constexpr double kUnfacedMargin = 0.1;
 
-enum class Sight : uint8_t { Open, Blocked, Grazing, Unknown };
+enum class Sight : uint8_t { Open, Blocked, Grazing, Unfaced, Unknown };
 
 struct SightResult {
     Sight sight = Sight::Unknown;
@@ -76,7 +88,14 @@ private:
         bool valid = false;
     };
     SightResult face_along_mesh_ray(const glm::dvec3& eye, const glm::dvec3& direction, uint32_t face) const;
+    // Whether the ray crosses, within kUnfacedMargin of t, a triangle of a face either region
+    // lists, other than the face the pixel shows. (The face seen is never what closes the boundary
+    // in front of it: the line stops short of it, so a wall just past the crossing must not count.)
+    bool face_closes(const glm::dvec3& eye, const glm::dvec3& direction, double t, int32_t region_a, int32_t region_b,
+                     uint32_t seen_face) const;
+    bool ray_crosses_triangle(uint32_t triangle, const glm::dvec3& eye, const glm::dvec3& direction, double t) const;
 
+    const Zone* zone_;
     TreeTracer tracer_;
     std::vector<FacePlane> planes_;
     std::unique_ptr<MeshTracer> mesh_;    // zones without a tree

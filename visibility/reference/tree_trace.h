@@ -20,7 +20,7 @@
 //    the zone: walls, the void, corrupt leaves;
 //  - a region the previous region does not see through (media.h: by default air and liquids see
 //    each other, sky only sky), with the sky rule given at construction; two leaves of one region
-//    always see each other;
+//    always see each other (TraceEnd::refused_region names it);
 //  - a node index out of range (a corrupt tree): treated as solid.
 // A segment that starts in such a leaf is blocked at t = 0 and visits nothing. A tree with no
 // root (no tree at all) blocks every segment: callers test has_tree() first.
@@ -46,6 +46,9 @@ struct TraceEnd {
     double t = 0.0;       // where the walk stopped: t_end, or the entry of the leaf that blocked it
     bool blocked = false; // stopped by a leaf it cannot see into (not by reaching t_end)
     int32_t last_region = -1; // the last region visited, -1 when none was
+    // blocked by the content rule (media.h), not by a wall: the open region the line could not
+    // enter from last_region; -1 when a solid, outside or corrupt leaf stopped it (or nothing did)
+    int32_t refused_region = -1;
 };
 
 class TreeTracer {
@@ -178,6 +181,7 @@ TraceEnd TreeTracer::trace(const glm::dvec3& origin, const glm::dvec3& direction
             end.t = t0;
             end.blocked = true;
             end.last_region = previous;
+            end.refused_region = region;
             return end;
         }
         visit(region, t0, t1);
