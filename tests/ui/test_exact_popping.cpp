@@ -234,8 +234,8 @@ TEST(ExactPopping, AWaterSurfaceClosesTheBoundaryButWhereItHasAGap)
 
 // ericw's q2_liquids puts translucent liquid brushes against plain ones of the same liquid: no
 // face lies between them, and Quake 2's vis (ericw's PVS, which the reference equals there) does
-// not see across. The raster does. Those pixels were once all counted as cracks (98 % of the
-// raster popping over 100 cameras); they are holes in the map, not gaps between triangles.
+// not see across. The raster does. Those pixels are holes in the map, not gaps between triangles
+// (counted as cracks, they were 98 % of the raster popping over these 100 cameras).
 TEST(ExactPopping, Quake2LiquidsWithEricwsPvsShowHolesNotCracks)
 {
     SHARED_DATA_OR_SKIP(path, "modern-quake/q2/q2_liquids.ericw-vis.bsp");
@@ -243,17 +243,22 @@ TEST(ExactPopping, Quake2LiquidsWithEricwsPvsShowHolesNotCracks)
     ASSERT_TRUE(zone.baked_pvs);
     const std::vector<Camera> cameras = random_cameras_in_regions(zone, 100, 1, Camera{});
     ASSERT_EQ(cameras.size(), 100u);
-    uint64_t popping = 0, unfaced = 0, cracks = 0, confirmed = 0;
+    uint64_t popping = 0, unfaced = 0, cracks = 0, confirmed = 0, grazing_or_unlisted = 0;
     for (const WalkRow& row : run_accuracy_walk(zone, &*zone.baked_pvs, cameras, WalkOptions{})) {
         popping += row.accuracy.popping_pixels;
         unfaced += row.popping_unfaced;
         cracks += row.popping_cracks;
         confirmed += row.popping_confirmed;
+        grazing_or_unlisted += row.popping_grazing + row.popping_unlisted;
     }
     ASSERT_GT(popping, 10000u) << "the raster sees across the plain liquids' faceless boundaries";
     EXPECT_EQ(confirmed, 0u);
     EXPECT_GT(unfaced, popping * 9 / 10);
     EXPECT_LT(cracks, popping / 50) << "cracks are single pixels at triangle edges, not whole areas";
+    // Near a liquid face's edge the backed-off line stops short of the boundary it crosses just
+    // before the face: followed on to the face, those are unfaced too (1.3 % of the popping when
+    // they were not), leaving faces the file's leaf lists do not give the camera's leaf.
+    EXPECT_LT(grazing_or_unlisted, popping / 200);
 }
 
 } // namespace

@@ -78,9 +78,39 @@ SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& 
     if (end.blocked && end.refused_region >= 0 && end.last_region >= 0 &&
         !face_closes(eye, direction, end.t, end.last_region, end.refused_region, face))
         result.sight = Sight::Unfaced;
+    if (result.sight == Sight::Open && !region_lists(end.last_region, face))
+        follow_to_the_face(eye, direction, t_hit, face, scratch, result);
     if (result.sight == Sight::Open && !tracer_.open_beam(eye, direction, length, kSightMargin, scratch))
         result.sight = Sight::Grazing;
     return result;
+}
+
+bool SightCheck::region_lists(int32_t region, uint32_t face) const
+{
+    if (region < 0 || size_t(region) >= zone_->region_count())
+        return false;
+    const std::span<const uint32_t> faces = zone_->faces_of_region(uint32_t(region));
+    return std::find(faces.begin(), faces.end(), face) != faces.end();
+}
+
+// The backoff can stop a line short of a boundary it crosses just before the face: near the
+// face's edge, where the face lies on the far side of a corner. Traced on to the face's plane:
+// across a boundary the content rule closes and no face does, the pixel is Unfaced; ending in a
+// region that lists the face, that region is where the line ends. Else as the short trace said.
+void SightCheck::follow_to_the_face(const glm::dvec3& eye, const glm::dvec3& direction, double t_hit, uint32_t face,
+                                    TreeTracer::Scratch& scratch, SightResult& result) const
+{
+    const TraceEnd end = tracer_.trace(eye, direction, t_hit, scratch, [](int32_t, double, double) {});
+    if (end.blocked) {
+        if (end.refused_region >= 0 && end.last_region >= 0 &&
+            !face_closes(eye, direction, end.t, end.last_region, end.refused_region, face)) {
+            result.sight = Sight::Unfaced;
+            result.end_region = -1;
+        }
+        return;
+    }
+    if (region_lists(end.last_region, face))
+        result.end_region = end.last_region;
 }
 
 bool SightCheck::face_closes(const glm::dvec3& eye, const glm::dvec3& direction, double t, int32_t region_a,

@@ -12,6 +12,11 @@
 // measured off the face's plane (at most kSightBackoffMax along the ray), because a face lies
 // on its leaf's boundary only to within its file's vertex noise (Quake: 0.1 units).
 //
+// An Open segment that ends in a region not listing the face (the backoff stopped it short of a
+// boundary it crosses just before the face, near the face's edge) is traced on to the face's
+// plane: Unfaced if the content rule closes that boundary and no face does; else it ends in the
+// region there when that region lists the face.
+//
 // Grazing: the segment is open, but not as a beam (TreeTracer::open_beam: one of four
 // companions, moved by kSightMargin across the ray, is blocked): the line passes within kSightMargin of a wall's edge
 // or corner (or touches it exactly, where the tree walk sends it round the corner). Such a line
@@ -93,6 +98,9 @@ private:
     // in front of it: the line stops short of it, so a wall just past the crossing must not count.)
     bool face_closes(const glm::dvec3& eye, const glm::dvec3& direction, double t, int32_t region_a, int32_t region_b,
                      uint32_t seen_face) const;
+    bool region_lists(int32_t region, uint32_t face) const;
+    void follow_to_the_face(const glm::dvec3& eye, const glm::dvec3& direction, double t_hit, uint32_t face,
+                            TreeTracer::Scratch& scratch, SightResult& result) const;
     bool ray_crosses_triangle(uint32_t triangle, const glm::dvec3& eye, const glm::dvec3& direction, double t) const;
 
     const Zone* zone_;
