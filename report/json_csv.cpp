@@ -1,5 +1,6 @@
 #include "report/json_csv.h"
 
+#include <algorithm>
 #include <map>
 
 namespace pvs {
@@ -19,9 +20,15 @@ void flatten_json(const nlohmann::json& value, const std::string& prefix, CsvFie
             flatten_json(child, prefix.empty() ? key : prefix + "." + key, out);
     } else if (value.is_string()) {
         out.emplace_back(prefix, csv_cell(value.get<std::string>()));
-    } else if (value.is_null()) {
-        out.emplace_back(prefix, "");
-    } else if (!value.is_array()) {
+    } else if (value.is_array()) {
+        const bool short_scalars = value.size() <= kCsvArrayColumns &&
+                                   std::all_of(value.begin(), value.end(), [](const nlohmann::json& v) {
+                                       return v.is_primitive() && !v.is_null();
+                                   });
+        if (short_scalars)
+            for (size_t i = 0; i < value.size(); ++i)
+                flatten_json(value[i], prefix + "." + std::to_string(i), out);
+    } else if (!value.is_null()) {
         out.emplace_back(prefix, value.dump());
     }
 }

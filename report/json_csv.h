@@ -1,5 +1,7 @@
-// JSON reports as CSV: scalars flattened to dotted column names ("pvs.mean_visible"), arrays
-// left out (a list does not fit one cell), strings quoted with "" doubled, null as empty.
+// JSON reports as CSV: scalars flattened to dotted column names ("pvs.mean_visible"); a short
+// array of scalars (a point, a grid's counts: at most kCsvArrayColumns) to one column per element
+// ("bounds.min.0", ".1", ".2"); longer arrays and arrays of objects left out (a list does not fit
+// one row); strings quoted with "" doubled; null gives no cell (a part the zone does not have).
 // Rows of different shape (a zone with a view grid, one without) share one header: the union of
 // their columns in first-seen order, empty where a row has none.
 #pragma once
@@ -11,6 +13,8 @@
 #include <vector>
 
 namespace pvs {
+
+inline constexpr size_t kCsvArrayColumns = 4;
 
 using CsvFields = std::vector<std::pair<std::string, std::string>>; // (column, cell text)
 

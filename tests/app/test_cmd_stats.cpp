@@ -50,6 +50,11 @@ TEST(StatsCommand, FolderGivesOneRowPerZoneAndAnErrorRowForABadFile)
     const std::vector<std::string> zones = lines_of(o.csv);
     ASSERT_EQ(zones.size(), 3u); // header + 2 zones
     EXPECT_EQ(zones[0].rfind("file,map,status,error,", 0), 0u) << zones[0];
+    // A point is three columns; a part the zone lacks (a Quake map has no view grid) is none.
+    const std::string header = "," + zones[0] + ",";
+    for (const char* column : {",bounds.min.0,", ",bounds.min.1,", ",bounds.min.2,", ",bounds.max.2,"})
+        EXPECT_NE(header.find(column), std::string::npos) << column << " in " << zones[0];
+    EXPECT_EQ(header.find(",view_grid"), std::string::npos) << zones[0];
     EXPECT_NE(zones[1].find("\"ok\""), std::string::npos);
     EXPECT_NE(zones[2].find("zz_broken.s3d"), std::string::npos);
     EXPECT_NE(zones[2].find("\"error\""), std::string::npos);
