@@ -72,8 +72,9 @@ void register_gen_command(CLI::App& app, int& exit_code)
         ->check(CLI::Range(gen::kMinTerrainHeight, gen::kMaxTerrainHeight))
         ->needs(outdoor)
         ->capture_default_str();
-    cmd->add_flag("--no-bake{false},--bake", options->params.bake,
-                  "Do not bake the PVS (by default the zone is baked with portal-full when made)");
+    CLI::Option* bake = cmd->add_flag("--no-bake{false},--bake", options->params.bake,
+                                      "Do not bake the PVS (by default the zone is baked with portal-full when "
+                                      "made; a --case zone only with --bake)");
     cmd->add_flag("--json", options->json, "Print the report as JSON");
     std::vector<std::string> case_names(gen::stability_case_names().begin(), gen::stability_case_names().end());
     cmd->add_option("--case", options->case_name, "Instead of rooms: a crafted zone on one failure mode, with its "
@@ -81,7 +82,7 @@ void register_gen_command(CLI::App& app, int& exit_code)
         ->check(CLI::IsMember(case_names))
         ->excludes(outdoor);
     cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
-    cmd->callback([options, cell, &exit_code] {
+    cmd->callback([options, cell, bake, &exit_code] {
         // The output's kind is known before the zone is made (an outdoor bake takes minutes).
         const auto output = options->output.empty() ? std::nullopt : zone_output_for(options->output, "");
         if (!options->output.empty() && !output) {
@@ -102,8 +103,14 @@ void register_gen_command(CLI::App& app, int& exit_code)
         if (!options->case_name.empty())
             crafted.emplace(gen::make_stability_case(options->case_name));
         std::optional<Zone> made;
-        if (crafted)
+        if (crafted) {
             made.emplace(std::move(crafted->zone));
+            // A case is made without a PVS (stability runs every method on it); --bake asks for one.
+            if (bake->count() > 0 && params.bake) {
+                std::erase_if(made->source.notes, [](const std::string& note) { return note.starts_with("no PVS"); });
+                gen::bake_generated_pvs(*made, params.bake_threads, params.bake_progress, VisParams::Method::Full, true);
+            }
+        }
         else if (options->outdoor) {
             gen::OutdoorParams outdoor_params;
             outdoor_params.size = options->size;
