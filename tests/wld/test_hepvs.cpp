@@ -207,5 +207,25 @@ TEST(Hepvs, AHepvsWithoutItsObjOrOfAnotherObjIsRefused)
     EXPECT_THROW(load_zone(dir + "other.obj"), FileError); // no name of the .hepvs is an object
 }
 
+TEST(Hepvs, ObjectsTheHepvsDoesNotNameAreAWarning)
+{
+    const std::string dir = ::testing::TempDir();
+    // Objects a, b (named by small_file()) and c, which no cell can list.
+    const std::string obj = "o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\no b\nf 1 2 3\no c\nf 1 2 3\n";
+    write_whole_file(dir + "three.obj", std::vector<uint8_t>(obj.begin(), obj.end()));
+    write_whole_file(dir + "three.hepvs", write_hepvs(small_file()));
+    const Zone zone = load_zone(dir + "three.obj");
+    ASSERT_EQ(zone.region_count(), 3u);
+    const auto warning = std::find_if(zone.source.notes.begin(), zone.source.notes.end(), [](const std::string& n) {
+        return n.find("1 of the OBJ's 3 objects are not in") != std::string::npos;
+    });
+    EXPECT_NE(warning, zone.source.notes.end());
+
+    write_whole_file(dir + "two.obj", std::vector<uint8_t>(obj.begin(), obj.begin() + long(obj.find("o c"))));
+    write_whole_file(dir + "two.hepvs", write_hepvs(small_file()));
+    for (const std::string& note : load_zone(dir + "two.obj").source.notes)
+        EXPECT_EQ(note.find("objects are not in"), std::string::npos) << note;
+}
+
 } // namespace
 } // namespace pvs::test

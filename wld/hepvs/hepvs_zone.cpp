@@ -50,6 +50,16 @@ void attach_hepvs(Zone& zone, const HepvsFile& hepvs, const std::string& hepvs_p
     zone.source.notes.push_back(note);
     if (unknown > 0)
         zone.source.notes.push_back(std::to_string(unknown) + " of its object names are not in the OBJ (ignored)");
+    std::vector<uint8_t> named(zone.region_count(), 0);
+    for (const int64_t r : column)
+        if (r >= 0)
+            named[size_t(r)] = 1;
+    const size_t unnamed = size_t(std::count(named.begin(), named.end(), uint8_t{0}));
+    if (unnamed > 0)
+        zone.source.notes.push_back("warning: " + std::to_string(unnamed) + " of the OBJ's " +
+                                    std::to_string(zone.region_count()) + " objects are not in " + hepvs_path +
+                                    ": no cell sees them, so the culler never draws them (a .hepvs of another "
+                                    "version of the level?)");
     for (const std::string& w : hepvs.warnings)
         zone.source.notes.push_back(hepvs_path + ": " + w);
 }
