@@ -43,6 +43,16 @@ std::optional<ui::OverlaySettings> parse_overlays(const std::string& text)
     return o;
 }
 
+std::vector<std::string> with_implied_inspect(const CLI::App& app, std::vector<std::string> arguments)
+{
+    if (arguments.empty() || arguments.front().empty() || arguments.front().front() == '-')
+        return arguments;
+    const auto named = app.get_subcommands([&](const CLI::App* sub) { return sub->check_name(arguments.front()); });
+    if (named.empty())
+        arguments.insert(arguments.begin(), "inspect");
+    return arguments;
+}
+
 void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(const InspectArguments&)> run)
 {
     auto o = std::make_shared<InspectArguments>();

@@ -17,6 +17,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pvs::app {
 
@@ -43,6 +44,11 @@ struct InspectArguments {
 
 // Registers the subcommand; when it runs, `exit_code` receives run(arguments).
 void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(const InspectArguments&)> run);
+
+// `pvscope FILE [OPTIONS]` means `pvscope inspect FILE [OPTIONS]` (--map, --camera, ... then work
+// in the short form too): `arguments` (argv after the program name) with "inspect" put in front
+// when the first is neither an option nor one of `app`'s subcommands.
+std::vector<std::string> with_implied_inspect(const CLI::App& app, std::vector<std::string> arguments);
 
 // "membership,membership-boxes,planes,portals,bounds,zonelines,frustum,cell,areaportals" (any subset, or
 // "none") -> the overlay toggles; nullopt for an unknown name.

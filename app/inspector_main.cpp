@@ -7,7 +7,9 @@
 #include "ui/gui/inspector_app.h"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -64,7 +66,14 @@ int main(int argc, char** argv)
     std::string zone_path; // `pvscope FILE`: the inspector on FILE
     app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");
 
-    CLI11_PARSE(app, argc, argv);
+    std::vector<std::string> arguments =
+        pvs::app::with_implied_inspect(app, std::vector<std::string>(argv + 1, argv + argc));
+    std::reverse(arguments.begin(), arguments.end()); // CLI11 parses a vector from its back
+    try {
+        app.parse(arguments);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
     if (app.get_subcommands().empty()) {
         pvs::gui::InspectorOptions options;
         options.zone_path = zone_path;

@@ -57,7 +57,8 @@ int main(int argc, char** argv)
     app.add_option("file", zone_path, "Zone file to open in the inspector when no subcommand is given");
 
     // `pvscope vis` takes vis's one-dash spellings (-threads 2 -noambientsky) as well.
-    std::vector<std::string> arguments = pvs::app::normalize_vis_arguments(std::vector<std::string>(argv + 1, argv + argc));
+    std::vector<std::string> arguments = pvs::app::with_implied_inspect(
+        app, pvs::app::normalize_vis_arguments(std::vector<std::string>(argv + 1, argv + argc)));
     std::reverse(arguments.begin(), arguments.end()); // CLI11 parses a vector from its back
     try {
         app.parse(arguments);
