@@ -191,8 +191,11 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
                                                                             : FrustumBoxes::Planes::All,
                                        blocks_ ? blocks_->coordinate_scale() : 0.0f);
     }
-    // Big zones: whole blocks of ids at a time, for the distance and the frustum (the same answers).
-    const bool by_blocks = blocks_ && !add_own_region && (planes || want_distance);
+    // Big zones with many candidates: whole blocks of ids at a time, for the distance and the
+    // frustum (the same answers). A sparse row (a Quake map's ~150 of 1 200) is cheaper region by
+    // region than the walk of the block tree over the whole zone.
+    const size_t candidate_count = stats.pvs_used ? stats.regions_after_pvs : region_count;
+    const bool by_blocks = blocks_ && !add_own_region && (planes || want_distance) && candidate_count >= kBlocksFrom;
     if (!(by_blocks && planes)) // the block stage's frustum fills `visible` itself
         visible.resize(stats.regions_after_pvs);
     size_t kept = 0;

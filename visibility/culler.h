@@ -4,9 +4,10 @@
 //
 // The frustum stage tests the row's regions' boxes branch-free, four planes at a time
 // (FrustumBoxes; the same answers as Frustum::intersects), and uses only the four side planes
-// when the far plane lies beyond the whole zone. On zones of kBlocksFrom regions or more it first
-// tests boxes over runs of 64, 128, ... region ids (RegionBlocks: the same answers), so a frame
-// of tens of thousands of regions tests one by one only those the frustum's boundary crosses.
+// when the far plane lies beyond the whole zone. On zones of kBlocksFrom regions or more, a frame
+// with kBlocksFrom candidates or more (after the PVS) first tests boxes over blocks of 64 regions
+// that lie together and over a tree of such blocks (RegionBlocks: the same answers), so a frame of
+// tens of thousands of regions tests one by one only those the frustum's boundary crosses.
 // It walks the row's words directly, so a frame allocates nothing once `visible` has grown.
 //
 // Grid zones (Zone::view_grid: OBJ + .hepvs) find the camera's view cell on the grid instead
@@ -40,7 +41,8 @@ namespace pvs {
 
 enum class CullMode : uint8_t { None, Frustum, Pvs, PvsFrustum };
 
-// Zones with at least this many regions get the block stage (RegionBlocks).
+// Zones with at least this many regions get the block stage (RegionBlocks), used on frames with at
+// least this many candidates after the PVS.
 inline constexpr size_t kBlocksFrom = 512;
 const char* cull_mode_name(CullMode mode);
 std::optional<CullMode> parse_cull_mode(const std::string& name); // "none", "frustum", "pvs", "pvs+frustum"

@@ -29,8 +29,22 @@ uint32_t morton(uint32_t x, uint32_t y, uint32_t z)
     return spread(x) | (spread(y) << 1) | (spread(z) << 2);
 }
 
-// The regular regions in Morton order of their centres; the others in `odd`.
-std::vector<uint32_t> spatial_order(std::span<const Aabb> boxes, std::vector<uint32_t>& odd)
+double block_surface(std::span<const Aabb> boxes, const std::vector<uint32_t>& order)
+{
+    double total = 0.0;
+    for (size_t i = 0; i < order.size(); i += RegionBlocks::kBlock) {
+        Aabb block;
+        for (size_t k = i; k < std::min(order.size(), i + RegionBlocks::kBlock); ++k)
+            block.grow(boxes[order[k]]);
+        const glm::vec3 s = block.size();
+        total += 2.0 * (double(s.x) * s.y + double(s.y) * s.z + double(s.z) * s.x);
+    }
+    return total;
+}
+
+// The regular regions in id order when that order's blocks are compact enough (see the header),
+// else in Morton order of their centres; the others in `odd`.
+std::vector<uint32_t> spatial_order(std::span<const Aabb> boxes, std::vector<uint32_t>& odd, bool& in_id_order)
 {
     Aabb all;
     std::vector<uint32_t> regular;
@@ -52,9 +66,25 @@ std::vector<uint32_t> spatial_order(std::span<const Aabb> boxes, std::vector<uin
                          r});
     }
     std::sort(keyed.begin(), keyed.end());
+    std::vector<uint32_t> morton_order(keyed.size());
     for (size_t i = 0; i < keyed.size(); ++i)
-        regular[i] = keyed[i].second;
-    return regular;
+        morton_order[i] = keyed[i].second;
+    in_id_order = block_surface(boxes, regular) <= RegionBlocks::kIdOrderSlack * block_surface(boxes, morton_order);
+    return in_id_order ? regular : morton_order;
+}
+
+// Per block: its first id when its members are consecutive ids.
+std::vector<uint32_t> run_starts(const std::vector<uint32_t>& member, uint32_t no_run)
+{
+    std::vector<uint32_t> out;
+    for (size_t first = 0; first < member.size(); first += RegionBlocks::kBlock) {
+        const size_t count = std::min<size_t>(RegionBlocks::kBlock, member.size() - first);
+        bool run = true;
+        for (size_t i = 1; i < count && run; ++i)
+            run = member[first + i] == member[first] + i;
+        out.push_back(run ? member[first] : no_run);
+    }
+    return out;
 }
 
 std::vector<Aabb> member_boxes(std::span<const Aabb> boxes, const std::vector<uint32_t>& member)
@@ -101,15 +131,15 @@ float largest_coordinate(std::span<const Aabb> boxes)
 } // namespace
 
 RegionBlocks::RegionBlocks(std::span<const Aabb> region_boxes)
-    : region_count_(region_boxes.size()), member_(spatial_order(region_boxes, odd_)),
-      scale_(largest_coordinate(region_boxes)), member_boxes_(member_boxes(region_boxes, member_)),
+    : region_count_(region_boxes.size()), member_(spatial_order(region_boxes, odd_, in_id_order_)),
+      run_start_(run_starts(member_, kNoRun)), scale_(largest_coordinate(region_boxes)), member_boxes_(member_boxes(region_boxes, member_)),
       nodes_(level_boxes(member_boxes(region_boxes, member_), level_first_, level_size_))
 {
 }
 
 size_t RegionBlocks::memory_bytes() const
 {
-    return (member_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity()) * sizeof(uint32_t) +
+    return (member_.capacity() + run_start_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity()) * sizeof(uint32_t) +
            member_boxes_.memory_bytes() + nodes_.memory_bytes();
 }
 
@@ -150,6 +180,13 @@ uint64_t RegionBlocks::members_in_row(uint32_t block, std::span<const uint64_t> 
 {
     const uint32_t first = block * kBlock;
     const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+    if (const uint32_t start = run_start_[block]; start != kNoRun) {
+        const uint32_t word = start / 64, shift = start % 64;
+        uint64_t bits = row[word] >> shift;
+        if (shift != 0 && shift + count > 64)
+            bits |= row[word + 1] << (64 - shift);
+        return count == 64 ? bits : bits & ((uint64_t{1} << count) - 1);
+    }
     uint64_t in_row = 0;
     for (uint32_t i = 0; i < count; ++i)
         in_row |= uint64_t(bits::test(row, member_[first + i])) << i;
@@ -159,6 +196,13 @@ uint64_t RegionBlocks::members_in_row(uint32_t block, std::span<const uint64_t> 
 // Sets in `out` the region of each of the block's members that `members` holds.
 void RegionBlocks::set_members(uint32_t block, uint64_t members, std::span<uint64_t> out) const
 {
+    if (const uint32_t start = run_start_[block]; start != kNoRun) {
+        const uint32_t word = start / 64, shift = start % 64;
+        out[word] |= members << shift;
+        if (shift != 0 && (members >> (64 - shift)) != 0)
+            out[word + 1] |= members >> (64 - shift);
+        return;
+    }
     for (; members != 0; members &= members - 1)
         bits::set(out, member_[block * kBlock + uint32_t(std::countr_zero(members))]);
 }
