@@ -79,7 +79,7 @@ SightResult SightCheck::face_along_ray(const glm::dvec3& eye, const glm::dvec3& 
         !face_closes(eye, direction, end.t, end.last_region, end.refused_region, face))
         result.sight = Sight::Unfaced;
     if (result.sight == Sight::Open && !region_lists(end.last_region, face))
-        follow_to_the_face(eye, direction, t_hit, face, scratch, result);
+        follow_to_the_face(eye, direction, t_hit, -facing, face, scratch, result);
     if (result.sight == Sight::Open && !tracer_.open_beam(eye, direction, length, kSightMargin, scratch))
         result.sight = Sight::Grazing;
     return result;
@@ -97,12 +97,16 @@ bool SightCheck::region_lists(int32_t region, uint32_t face) const
 // face's edge, where the face lies on the far side of a corner. Traced on to the face's plane:
 // across a boundary the content rule closes and no face does, the pixel is Unfaced; ending in a
 // region that lists the face, that region is where the line ends. Else as the short trace said.
-void SightCheck::follow_to_the_face(const glm::dvec3& eye, const glm::dvec3& direction, double t_hit, uint32_t face,
-                                    TreeTracer::Scratch& scratch, SightResult& result) const
+// A boundary within kUnfacedMargin of the face's plane may be the face's own (a water surface
+// the region in front does not list): it counts for nothing.
+void SightCheck::follow_to_the_face(const glm::dvec3& eye, const glm::dvec3& direction, double t_hit,
+                                    double cos_incidence, uint32_t face, TreeTracer::Scratch& scratch,
+                                    SightResult& result) const
 {
     const TraceEnd end = tracer_.trace(eye, direction, t_hit, scratch, [](int32_t, double, double) {});
     if (end.blocked) {
-        if (end.refused_region >= 0 && end.last_region >= 0 &&
+        const bool off_the_face = (t_hit - end.t) * cos_incidence > kUnfacedMargin;
+        if (off_the_face && end.refused_region >= 0 && end.last_region >= 0 &&
             !face_closes(eye, direction, end.t, end.last_region, end.refused_region, face)) {
             result.sight = Sight::Unfaced;
             result.end_region = -1;

@@ -14,8 +14,9 @@
 //
 // An Open segment that ends in a region not listing the face (the backoff stopped it short of a
 // boundary it crosses just before the face, near the face's edge) is traced on to the face's
-// plane: Unfaced if the content rule closes that boundary and no face does; else it ends in the
-// region there when that region lists the face.
+// plane: Unfaced if the content rule closes that boundary, more than kUnfacedMargin off the face's
+// plane (nearer, it may be the face's own), and no face does; else it ends in the region there
+// when that region lists the face.
 //
 // Grazing: the segment is open, but not as a beam (TreeTracer::open_beam: one of four
 // companions, moved by kSightMargin across the ray, is blocked): the line passes within kSightMargin of a wall's edge
@@ -61,8 +62,8 @@ namespace pvs {
 inline constexpr double kSightBackoff = 0.2;
 inline constexpr double kSightBackoffMax = 2.0;
 inline constexpr double kSightMargin = kBeamMargin; // the reference's margin (tree_trace.h)
-// How near a face must come to a content-rule crossing to close it (zone units): well over
-// Quake's 0.1 vertex noise, so a T-junction gap in a closing face is still a crack.
+// How near a face must come to a content-rule crossing to close it (zone units): Quake's vertex
+// noise, so a T-junction gap in a closing face (zero wide in exact geometry) is still a crack.
 inline constexpr double kUnfacedMargin = 0.1;
 
 enum class Sight : uint8_t { Open, Blocked, Grazing, Unfaced, Unknown };
@@ -99,8 +100,8 @@ private:
     bool face_closes(const glm::dvec3& eye, const glm::dvec3& direction, double t, int32_t region_a, int32_t region_b,
                      uint32_t seen_face) const;
     bool region_lists(int32_t region, uint32_t face) const;
-    void follow_to_the_face(const glm::dvec3& eye, const glm::dvec3& direction, double t_hit, uint32_t face,
-                            TreeTracer::Scratch& scratch, SightResult& result) const;
+    void follow_to_the_face(const glm::dvec3& eye, const glm::dvec3& direction, double t_hit, double cos_incidence,
+                            uint32_t face, TreeTracer::Scratch& scratch, SightResult& result) const;
     bool ray_crosses_triangle(uint32_t triangle, const glm::dvec3& eye, const glm::dvec3& direction, double t) const;
 
     const Zone* zone_;
