@@ -135,12 +135,35 @@ RegionBlocks::RegionBlocks(std::span<const Aabb> region_boxes)
       run_start_(run_starts(member_, kNoRun)), scale_(largest_coordinate(region_boxes)), member_boxes_(member_boxes(region_boxes, member_)),
       nodes_(level_boxes(member_boxes(region_boxes, member_), level_first_, level_size_))
 {
+    make_spans();
+}
+
+void RegionBlocks::make_spans()
+{
+    span_first_.push_back(0);
+    std::vector<uint32_t> ids;
+    for (uint32_t block = 0; block < run_start_.size(); ++block) {
+        if (run_start_[block] == kNoRun) {
+            const uint32_t first = block * kBlock;
+            ids.assign(member_.begin() + first, member_.begin() + std::min<size_t>(member_.size(), first + kBlock));
+            std::sort(ids.begin(), ids.end());
+            for (uint32_t id : ids) {
+                if (span_word_.size() == span_first_.back() || span_word_.back() != id / 64) {
+                    span_word_.push_back(id / 64);
+                    span_mask_.push_back(0);
+                }
+                span_mask_.back() |= uint64_t{1} << (id % 64);
+            }
+        }
+        span_first_.push_back(uint32_t(span_word_.size()));
+    }
 }
 
 size_t RegionBlocks::memory_bytes() const
 {
-    return (member_.capacity() + run_start_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity()) * sizeof(uint32_t) +
-           member_boxes_.memory_bytes() + nodes_.memory_bytes();
+    return (member_.capacity() + run_start_.capacity() + odd_.capacity() + level_first_.capacity() + level_size_.capacity() +
+            span_first_.capacity() + span_word_.capacity()) * sizeof(uint32_t) +
+           span_mask_.capacity() * sizeof(uint64_t) + member_boxes_.memory_bytes() + nodes_.memory_bytes();
 }
 
 // Visits the tree from `node` at `level`: decide(box, tests) says Outside / Inside / Partial for a
@@ -207,6 +230,39 @@ void RegionBlocks::set_members(uint32_t block, uint64_t members, std::span<uint6
         bits::set(out, member_[block * kBlock + uint32_t(std::countr_zero(members))]);
 }
 
+// Whether the row holds any member of the block.
+bool RegionBlocks::any_member_in_row(uint32_t block, std::span<const uint64_t> row) const
+{
+    if (run_start_[block] != kNoRun)
+        return members_in_row(block, row) != 0;
+    for (uint32_t s = span_first_[block]; s < span_first_[block + 1]; ++s)
+        if ((row[span_word_[s]] & span_mask_[s]) != 0)
+            return true;
+    return false;
+}
+
+// Sets in `out` every member of the block that the row holds.
+void RegionBlocks::take_members_in_row(uint32_t block, std::span<const uint64_t> row, std::span<uint64_t> out) const
+{
+    if (run_start_[block] != kNoRun) {
+        set_members(block, members_in_row(block, row), out);
+        return;
+    }
+    for (uint32_t s = span_first_[block]; s < span_first_[block + 1]; ++s)
+        out[span_word_[s]] |= row[span_word_[s]] & span_mask_[s];
+}
+
+// Sets in `out` the members of `tested` (bit i: member i) that the row holds.
+void RegionBlocks::take_tested_members(uint32_t block, uint64_t tested, std::span<const uint64_t> row,
+                                       std::span<uint64_t> out) const
+{
+    for (; tested != 0; tested &= tested - 1) {
+        const uint32_t region = member_[block * kBlock + uint32_t(std::countr_zero(tested))];
+        if (bits::test(row, region))
+            bits::set(out, region);
+    }
+}
+
 size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& regions,
                              const FrustumBoxes::PlaneGroups& planes, Scratch& scratch, uint32_t* out) const
 {
@@ -214,14 +270,22 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
     taken.assign(row.size(), 0);
     // Only the planes that cross a node are tested for its children (as Quake's clip flags).
     const auto decide = [&](uint32_t box, unsigned& crossing) { return nodes_.classify(box, planes, crossing); };
+    // A run block reads its row bits in two words and tests only the fours the row holds; another
+    // block tests every member (a gather of 64 row bits costs more than the tests it saves on the
+    // dense rows this stage runs for) and looks up the row only for those the frustum keeps.
     const auto take = [&](uint32_t block, FrustumBoxes::Side side, unsigned crossing) {
-        const uint64_t in_row = members_in_row(block, row);
-        if (side == FrustumBoxes::Side::Partial && in_row != 0) {
-            const uint32_t first = block * kBlock;
-            const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
-            set_members(block, in_row & member_boxes_.intersect_mask(first, count, planes, crossing, in_row), taken);
-        } else {
-            set_members(block, in_row, taken); // Inside: every member the row holds
+        if (side != FrustumBoxes::Side::Partial) {
+            take_members_in_row(block, row, taken); // Inside: every member the row holds
+            return;
+        }
+        const uint32_t first = block * kBlock;
+        const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+        if (run_start_[block] != kNoRun) {
+            const uint64_t in_row = members_in_row(block, row);
+            if (in_row != 0)
+                set_members(block, in_row & member_boxes_.intersect_mask(first, count, planes, crossing, in_row), taken);
+        } else if (any_member_in_row(block, row)) {
+            take_tested_members(block, member_boxes_.intersect_mask(first, count, planes, crossing, ~uint64_t{0}), row, taken);
         }
     };
     walk_all(FrustumBoxes::all_planes(planes), decide, take);

@@ -68,6 +68,10 @@ private:
     template <class Decide, class Take>
     void walk_all(unsigned tests, Decide&& decide, Take&& take) const;
     uint64_t members_in_row(uint32_t block, std::span<const uint64_t> row) const;
+    bool any_member_in_row(uint32_t block, std::span<const uint64_t> row) const;
+    void take_members_in_row(uint32_t block, std::span<const uint64_t> row, std::span<uint64_t> out) const;
+    void take_tested_members(uint32_t block, uint64_t tested, std::span<const uint64_t> row, std::span<uint64_t> out) const;
+    void make_spans();
     void set_members(uint32_t block, uint64_t members, std::span<uint64_t> out) const;
 
     // Members are made in this order, and the constructor fills some while making others:
@@ -78,6 +82,12 @@ private:
     std::vector<uint32_t> member_;       // region ids, block by block (blocks of kBlock, the last shorter)
     std::vector<uint32_t> run_start_;    // per block: its first id when its members are consecutive ids, else kNoRun
     static constexpr uint32_t kNoRun = UINT32_MAX;
+    // Blocks that are not runs: their members as words of an id row, (word, mask of the members
+    // in it) from span_first_[block] to span_first_[block + 1], so a block wholly inside the
+    // frustum takes its members with a word operation per word it touches, not a bit per member.
+    std::vector<uint32_t> span_first_;
+    std::vector<uint32_t> span_word_;
+    std::vector<uint64_t> span_mask_;
     std::vector<uint32_t> level_first_;  // per level: its first node in nodes_
     std::vector<uint32_t> level_size_;   // per level: its node count
     float scale_ = 0.0f;

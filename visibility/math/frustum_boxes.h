@@ -5,7 +5,8 @@
 // branches on every box. Here the planes are prepared once per frame, four to a group and
 // split into their positive and negative normal parts (n+ = max(n, 0), n- = min(n, 0)), so the
 // positive vertex's distance is a branch-free sum, max·n+ + min·n- - dist, over four planes at
-// once (SSE2, part of every x86-64; a scalar loop elsewhere). The products with the zero part
+// once (SSE2, part of every x86-64; a scalar loop elsewhere; AVX without FMA, when the CPU has it,
+// for eight boxes against one plane). The products with the zero part
 // are exact zeros, so every distance is bit for bit the one Frustum::intersects computes, and
 // the answers are identical to it (tests/visibility/test_frustum_boxes.cpp checks that on
 // random boxes and frustums, touching boxes included).
@@ -39,6 +40,9 @@ public:
         // Per plane: a bound on the float round-off of a distance to a box within the
         // coordinate scale given to prepare (classify's safety margin).
         float margin[2][4];
+        // Per plane p < 8, the same values spread over four lanes (pos x, y, z, neg x, y, z,
+        // dist): the four-boxes test loads them instead of shuffling each one for every four.
+        float splat[8][7][4];
         int group_count = 1;
         int plane_count = 4; // 4 (sides) or 6
     };
@@ -72,7 +76,8 @@ public:
     size_t collect_all(const PlaneGroups& planes, uint32_t* out) const;
 
     // Boxes [first, first + count) (count <= 64): bit i of the result set when box first + i
-    // intersects, the same answers as intersects(), four boxes at a time (SoA). With
+    // intersects, the same answers as intersects(), four boxes at a time (SoA; eight with AVX where the
+    // CPU has it, checked once at start-up). With
     // `crossing` (classify's, for a box holding them all) only those planes are tested: the others
     // pass every box; and only the fours with a bit in `wanted` are tested (the others' bits are 0).
     uint64_t intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const;
