@@ -309,15 +309,22 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
         return nodes_.squared_reach(box, eye) < limit * (1.0f - kMargin) ? FrustumBoxes::Side::Inside
                                                                           : FrustumBoxes::Side::Partial;
     };
+    // As collect(): a block that is not a run tests its members before looking up the row.
     const auto take = [&](uint32_t block, FrustumBoxes::Side side, unsigned) {
-        uint64_t in_row = members_in_row(block, row);
-        if (side == FrustumBoxes::Side::Partial)
-            for (uint64_t rest = in_row; rest != 0; rest &= rest - 1) {
-                const uint32_t i = uint32_t(std::countr_zero(rest));
-                if (!(member_boxes_.squared_distance(block * kBlock + i, eye) <= limit))
-                    in_row &= ~(uint64_t{1} << i);
-            }
-        set_members(block, in_row, near);
+        if (side != FrustumBoxes::Side::Partial) {
+            take_members_in_row(block, row, near);
+            return;
+        }
+        const bool run = run_start_[block] != kNoRun;
+        const uint32_t first = block * kBlock;
+        const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
+        if (!run && !any_member_in_row(block, row))
+            return;
+        uint64_t kept = member_boxes_.near_mask(first, count, eye, limit);
+        if (run)
+            set_members(block, kept & members_in_row(block, row), near);
+        else
+            take_tested_members(block, kept, row, near);
     };
     walk_all(0, decide, take);
     for (uint32_t r : odd_)

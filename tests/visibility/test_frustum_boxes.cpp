@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 #include <random>
 
 namespace pvs {
@@ -113,6 +114,42 @@ TEST(FrustumBoxes, BoxesTouchingAPlaneAreKeptLikeTheScalarTest)
         }
     }
     EXPECT_GT(touching, 2000); // the cases really were on the plane
+}
+
+// The far-plane sphere's test on many boxes at once: the same answer as squared_distance() <=
+// limit box by box, with limits set to a box's own squared distance (the boundary case), points
+// inside boxes, and an eye that is not a number (never near, as the scalar form has it).
+TEST(FrustumBoxes, NearMaskEqualsEachBoxsSquaredDistanceTest)
+{
+    std::mt19937 rng(19);
+    const std::vector<Aabb> boxes = random_boxes(rng, 640);
+    const FrustumBoxes packed(boxes);
+    std::uniform_real_distribution<float> u(-400.0f, 400.0f), radius(0.0f, 500.0f);
+    int near = 0, far = 0;
+    for (int t = 0; t < 200; ++t) {
+        glm::vec3 eye{u(rng), u(rng), u(rng)};
+        if (t == 0)
+            eye.x = std::numeric_limits<float>::quiet_NaN();
+        const uint32_t first = uint32_t(rng() % (boxes.size() - 64));
+        float limit = radius(rng) * radius(rng);
+        if (t % 3 == 1)
+            limit = packed.squared_distance(first + uint32_t(rng() % 64), eye); // exactly on one box
+        for (uint32_t count : {64u, 13u, 4u, 1u}) {
+            const uint64_t mask = packed.near_mask(first, count, eye, limit);
+            for (uint32_t i = 0; i < 64; ++i) {
+                const bool expected = i < count && packed.squared_distance(first + i, eye) <= limit;
+                ASSERT_EQ(((mask >> i) & 1u) != 0, expected) << "sphere " << t << ", box " << first + i;
+                if (count == 64) {
+                    (expected ? near : far) += 1;
+                }
+            }
+        }
+        if (t == 0) {
+            EXPECT_EQ(packed.near_mask(first, 64, eye, limit), 0u) << "a NaN eye is near nothing";
+        }
+    }
+    EXPECT_GT(near, 1000);
+    EXPECT_GT(far, 1000);
 }
 
 } // namespace

@@ -289,6 +289,31 @@ uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const Plan
 
 #endif
 
+uint64_t FrustumBoxes::near_mask(uint32_t first, uint32_t count, const glm::vec3& p, float limit) const
+{
+    uint64_t mask = 0;
+    uint32_t i = 0;
+#if defined(__SSE2__)
+    const __m128 zero = _mm_setzero_ps(), bound = _mm_set1_ps(limit);
+    const __m128 px = _mm_set1_ps(p.x), py = _mm_set1_ps(p.y), pz = _mm_set1_ps(p.z);
+    // squared_distance's max(min - p, p - max, 0) per axis; max(0, NaN) is NaN here (SSE's max
+    // returns its second operand when one is NaN), so a NaN eye is never near, as in the scalar form.
+    const auto axis = [&](const float* lo, const float* hi, __m128 at) {
+        const __m128 d = _mm_max_ps(zero, _mm_max_ps(_mm_sub_ps(_mm_loadu_ps(lo), at), _mm_sub_ps(at, _mm_loadu_ps(hi))));
+        return _mm_mul_ps(d, d);
+    };
+    for (; i + 4 <= count; i += 4) {
+        const size_t at = size_t(first) + i;
+        const __m128 sum = _mm_add_ps(_mm_add_ps(axis(&min_x_[at], &max_x_[at], px), axis(&min_y_[at], &max_y_[at], py)),
+                                      axis(&min_z_[at], &max_z_[at], pz));
+        mask |= uint64_t(_mm_movemask_ps(_mm_cmple_ps(sum, bound))) << i;
+    }
+#endif
+    for (; i < count; ++i)
+        mask |= uint64_t(squared_distance(first + i, p) <= limit) << i;
+    return mask;
+}
+
 uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes) const
 {
     return intersect_mask(first, count, planes, all_planes(planes), ~uint64_t{0});

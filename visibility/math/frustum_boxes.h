@@ -97,6 +97,10 @@ public:
         return sum;
     }
 
+    // Boxes [first, first + count) (count <= 64): bit i set when squared_distance(first + i, p) <=
+    // limit, the same sums (SSE, four at a time, where there is SSE2).
+    uint64_t near_mask(uint32_t first, uint32_t count, const glm::vec3& p, float limit) const;
+
     // The squared distance from `p` to the farthest point of box i.
     float squared_reach(uint32_t box, const glm::vec3& p) const
     {
