@@ -5,13 +5,17 @@
 // regions come in tree order: runs of ids are compact), else the Morton order of the boxes'
 // centres: the id order is taken when its blocks' boxes have at most kIdOrderSlack times the
 // Morton blocks' total surface. A block that is a run of consecutive ids reads its 64 row bits
-// with two word operations instead of 64 bit tests (and sets its output bits the same way).
+// with two word operations instead of 64 bit tests (and sets its output bits the same way);
+// another block keeps its ids as (row word, mask) pairs, so taking all its regions the row holds
+// is a word operation per word its ids fall in.
 //
 // collect() walks the tree with the camera's row: a box wholly outside the frustum drops its
 // regions, a box wholly inside takes every region of it the row holds, and only blocks the
-// frustum's boundary crosses test their regions, four at a time (FrustumBoxes::intersect_mask,
-// on the blocks' own copies of the boxes), against only the planes that cross the block and only
-// where the row holds one of the four; a node's children test only the planes crossing it (as
+// frustum's boundary crosses test their regions, four or eight at a time
+// (FrustumBoxes::intersect_mask, on the blocks' own copies of the boxes), against only the planes
+// that cross the block: a run block only where the row holds one of the four, another block all
+// its boxes first and the row only for those the frustum keeps (on the dense rows this stage runs
+// for, gathering 64 scattered row bits costs more than the tests it saves); a node's children test only the planes crossing it (as
 // Quake's clip flags). FrustumBoxes::classify decides with a round-off margin, so every region
 // gets exactly the answer FrustumBoxes::intersects gives it: the output equals the per-region
 // stage's, ascending. keep_near() does the same for the far-plane sphere. Regions whose box is
