@@ -10,7 +10,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${PVSCOPE_TEST_BUILD_DIR:-build-test}
 jobs=${PVSCOPE_JOBS:-$(nproc)}
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVSCOPE_SANITIZE=ON -DPVSCOPE_WERROR=ON
+# -g1 (line tables only): sanitizer reports still name file and line, and the build takes about a
+# third less time than with full debug information.
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPVSCOPE_SANITIZE=ON -DPVSCOPE_WERROR=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG"
 cmake --build "$build" -j "$jobs"
 ctest --test-dir "$build" --output-on-failure -j "$jobs" -LE slow
 # Tests labelled "slow" (the converged reference within every conservative method, on every
