@@ -320,7 +320,7 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
         const uint32_t count = std::min<uint32_t>(kBlock, uint32_t(member_.size()) - first);
         if (!run && !any_member_in_row(block, row))
             return;
-        uint64_t kept = member_boxes_.near_mask(first, count, eye, limit);
+        const uint64_t kept = member_boxes_.near_mask(first, count, eye, limit);
         if (run)
             set_members(block, kept & members_in_row(block, row), near);
         else
