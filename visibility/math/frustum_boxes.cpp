@@ -216,7 +216,15 @@ __attribute__((target("avx"))) unsigned intersect_eight_avx(const float* lo_x_at
     return ~unsigned(_mm256_movemask_ps(outside)) & 255u;
 }
 
-const bool kHasAvx = __builtin_cpu_supports("avx");
+// Whether this CPU runs the AVX path. __builtin_cpu_init first: this initializer may run before
+// libgcc's own CPU detection, and __builtin_cpu_supports would then answer false.
+bool cpu_has_avx()
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx");
+}
+
+const bool kHasAvx = cpu_has_avx();
 
 } // namespace
 #endif
