@@ -414,6 +414,8 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                         {"mean_visible_percent", regions ? 100.0 * r.mean_visible / regions : 0.0},
                         {"saw_into_own_region", r.saw_into_own_region},
                         {"leaf_recursions", r.leaf_recursions},
+                        {"flow_frames", r.frames},
+                        {"flow_frames_floor", r.portal_visible},
                         {"edits_applied", run.edits_applied}};
     if (run.portal_stats)
         j["leaks"] = {{"leaves_touching_world", run.portal_stats->leaves_touching_world.size()},

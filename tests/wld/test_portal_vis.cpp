@@ -395,6 +395,15 @@ TEST(PortalVis, FullIsTheSameForOneAndTwoThreadsOnARealMap)
     for (uint32_t r = 0; r < b->regions; ++r)
         differing += one[r] != b->full[r];
     EXPECT_EQ(differing, 0u) << "rows differ between 1 and 2 threads";
+    // Every walk enters each leaf its portal sees, so the walks' frames are at least the sum of the
+    // portals' visbits, which is at least what the rows hold beyond each region itself; the visbits
+    // are the same whatever the thread count.
+    size_t beyond_self = 0;
+    for (uint32_t r = 0; r < b->regions; ++r)
+        beyond_self += bits::count(one[r]) - (bits::test(one[r], r) ? 1 : 0);
+    EXPECT_GE(one_report.frames, one_report.portal_visible);
+    EXPECT_GE(one_report.portal_visible, beyond_self);
+    EXPECT_EQ(one_report.portal_visible, b->full_report.portal_visible);
     std::printf("[ %-7s ] Full: 1 thread %.3f s, 2 threads %.3f s (waits %.3f s); mean %.1f\n",
                 test::param_name(map).c_str(), one_report.seconds, b->full_report.seconds, b->full_report.wait_seconds,
                 one_report.mean_visible);
@@ -581,6 +590,26 @@ TEST(PortalVis, NoPortalsEveryRegionSeesOnlyItself)
         const Pvs none = bake(PortalSet{}, 0, m);     // no region at all
         EXPECT_EQ(none.region_count(), 0u);
     }
+}
+
+// A straight corridor of rooms 0..n-1 joined by equal squares in line: a sight line runs through
+// all of them, so the portal from room k into k + 1 sees rooms k + 1..n-1 (n - 1 - k) and the one
+// from k + 1 into k sees rooms k..0 (k + 1): n (n - 1) over all directed portals, each reached by
+// one walk only, so the flow enters exactly that many leaves.
+TEST(PortalVis, FramesAndTheirFloorOnAStraightCorridor)
+{
+    constexpr int32_t n = 7;
+    PortalSet set;
+    for (int32_t k = 0; k + 1 < n; ++k) {
+        const float x = 64.0f * float(k + 1);
+        add_portal(set, k, k + 1, {{x, 0, 0}, {x, 64, 0}, {x, 64, 64}, {x, 0, 64}}, {-1, 0, 0});
+    }
+    VisReport report;
+    const Rows rows = rows_of(bake(set, n, Method::Full, 2, &report));
+    for (int32_t r = 0; r < n; ++r)
+        EXPECT_EQ(bits::count(rows[r]), size_t(n)) << "room " << r << " sees the whole corridor";
+    EXPECT_EQ(report.portal_visible, size_t(n * (n - 1)));
+    EXPECT_EQ(report.frames, report.portal_visible);
 }
 
 TEST(PortalVis, UnusablePortalsAreSkipped)

@@ -23,6 +23,7 @@ bool FlowWorker::enter(uint32_t leaf, uint32_t entry)
     }
     Frame& f = frame(depth_ + 1);
     ++depth_;
+    ++frames_entered_;
     f.leaf = leaf;
     f.entry = entry;
     f.cursor = g_.leaf_first[leaf];
@@ -287,6 +288,7 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
             leave();
         return false;
     }
+    portal_visible_ += bits::count(vis_);
     return true;
 }
 

@@ -62,6 +62,10 @@ public:
     // ma, mb: the mightsee rows of ai and of that portal, dense.
     void passage_row(uint32_t ai, uint32_t k, const uint64_t* ma, const uint64_t* mb, uint64_t* out);
     size_t leaf_recursions() const { return leaf_recursions_; }
+    // Leaves the walks entered, and the leaves the finished walks saw (each directed portal's
+    // visbits counted): no per-portal flow can enter fewer leaves than the second.
+    size_t frames_entered() const { return frames_entered_; }
+    size_t portal_visible() const { return portal_visible_; }
     size_t dominated_windows() const { return memo_.dominated(); }
     uint64_t wait_nanos() const { return wait_nanos_; } // waiting for older portals' visbits
     size_t bytes() const
@@ -145,6 +149,8 @@ private:
     std::vector<uint32_t> passage_stack_;
     size_t depth_ = 0;
     size_t leaf_recursions_ = 0;
+    size_t frames_entered_ = 0;
+    size_t portal_visible_ = 0;
     uint64_t wait_nanos_ = 0;
     const Passages* passages_ = nullptr;
     std::vector<uint64_t> ones_;

@@ -110,6 +110,7 @@ bool run_base_vis(Bake& b, bool full)
 struct FlowTotals {
     std::atomic<uint64_t> wait_nanos{0};
     std::atomic<size_t> leaf_recursions{0};
+    std::atomic<size_t> frames{0}, portal_visible{0};
     std::atomic<size_t> target_checks{0}, target_check_prunes{0};
     std::atomic<size_t> dominated_windows{0};
 };
@@ -156,6 +157,8 @@ void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* pa
     totals.target_check_prunes.fetch_add(worker.target_check_prunes());
     totals.wait_nanos.fetch_add(worker.wait_nanos());
     totals.leaf_recursions.fetch_add(worker.leaf_recursions());
+    totals.frames.fetch_add(worker.frames_entered());
+    totals.portal_visible.fetch_add(worker.portal_visible());
     totals.dominated_windows.fetch_add(worker.dominated_windows());
     std::lock_guard lock(b.worker_bytes_mutex);
     b.worker_bytes += worker.bytes();
@@ -200,6 +203,8 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     if (!kept_going)
         b.user_cancel.store(true);
     rep.leaf_recursions = totals.leaf_recursions.load();
+    rep.frames = totals.frames.load();
+    rep.portal_visible = totals.portal_visible.load();
     rep.target_checks = totals.target_checks.load();
     rep.target_check_prunes = totals.target_check_prunes.load();
     rep.dominated_windows = totals.dominated_windows.load();

@@ -180,6 +180,12 @@ struct VisReport {
     unsigned threads = 0;          // worker threads used
     size_t saw_into_own_region = 0; // regions whose portals' visbits held the region itself
     size_t leaf_recursions = 0;    // Full: walks that met a region already on their chain
+    // Full: the leaves the walks entered (a walk's step into a leaf, ericw's recursions), and the
+    // sum over directed portals of the leaves each sees. Every walk enters each leaf its portal
+    // sees at least once, so portal_visible is the fewest frames any per-portal flow can enter
+    // for this result: frames / portal_visible is how much the flow walks beyond that.
+    size_t frames = 0;
+    size_t portal_visible = 0;
     double wait_seconds = 0.0;     // Full: time worker threads spent waiting for an older portal
     size_t passage_pairs = 0;      // Full: passages built (0: none, over the budget)
     double passage_seconds = 0.0;  // Full: of the bake's time, building them
