@@ -6,9 +6,13 @@
 //
 // "warm": the frames follow each other with nothing in between (the zone's data stays in
 // cache). "cold": before each frame 64 MiB are written, as a render between two frames does in
-// `pvscope walk`; only the cull is timed (manual time).
+// `pvscope walk`; only the cull is timed (manual time). An iteration is the 300 frames; the
+// counters mean_us and median_us are per frame.
 //
-//   build/tests/bench/bench_cull_outdoor --benchmark_min_time=0.5
+// A third case reads, cold or warm, only the boxes any exact box-hierarchy cull must look at one by
+// one (BoundaryBoxReads): the memory floor under the culler's figure.
+//
+//   build/tests/bench/bench_cull_outdoor --benchmark_repetitions=3
 #include "visibility/bit_row.h"
 #include "visibility/culler.h"
 #include "visibility/eval/camera_set.h"
@@ -18,6 +22,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <vector>
 
@@ -91,20 +97,32 @@ private:
     std::vector<uint64_t> row_;
 };
 
-// Runs `cull` over the cameras; argument 0: 1 = cold (caches evicted before each frame).
+// Runs `cull` over all the cameras per iteration; argument 0: 1 = cold (caches evicted before
+// each frame). The time reported is that of the 300 frames; the counters are per frame: mean_us,
+// and median_us (the walk's statistic), each averaged over the iterations.
 template <class Cull>
 void run_frames(benchmark::State& state, Cull&& cull)
 {
     const bool cold = state.range(0) != 0;
-    size_t i = 0;
+    std::vector<double> frame_us(cameras().size());
+    double median_sum = 0.0, total_sum = 0.0;
     for (auto _ : state) {
-        const Camera& camera = cameras()[i++ % cameras().size()];
-        if (cold)
-            evict_caches();
-        const auto start = std::chrono::steady_clock::now();
-        cull(camera);
-        state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        double total = 0.0;
+        for (size_t i = 0; i < cameras().size(); ++i) {
+            if (cold)
+                evict_caches();
+            const auto start = std::chrono::steady_clock::now();
+            cull(i);
+            frame_us[i] = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+            total += frame_us[i];
+        }
+        state.SetIterationTime(total * 1e-6);
+        total_sum += total;
+        std::nth_element(frame_us.begin(), frame_us.begin() + frame_us.size() / 2, frame_us.end());
+        median_sum += frame_us[frame_us.size() / 2];
     }
+    state.counters["mean_us"] = total_sum / double(state.iterations() * cameras().size());
+    state.counters["median_us"] = median_sum / double(state.iterations());
 }
 
 void BM_CullOutdoor_Culler(benchmark::State& state)
@@ -112,27 +130,112 @@ void BM_CullOutdoor_Culler(benchmark::State& state)
     Culler culler(outdoor(), &*outdoor().baked_pvs);
     std::vector<uint32_t> visible;
     uint64_t drawn = 0;
-    run_frames(state, [&](const Camera& camera) {
-        drawn += culler.cull(camera, {CullMode::PvsFrustum, false, false}, visible).regions_after_frustum;
+    run_frames(state, [&](size_t i) {
+        drawn += culler.cull(cameras()[i], {CullMode::PvsFrustum, false, false}, visible).regions_after_frustum;
         benchmark::DoNotOptimize(visible.data());
     });
-    state.counters["regions_drawn"] = double(drawn) / double(state.iterations());
+    state.counters["regions_drawn"] = double(drawn) / double(state.iterations() * cameras().size());
 }
-BENCHMARK(BM_CullOutdoor_Culler)->ArgName("cold")->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CullOutdoor_Culler)->ArgName("cold")->Arg(0)->Arg(1)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 void BM_CullOutdoor_Baseline_PerRegion(benchmark::State& state)
 {
     PerRegionCuller culler(outdoor());
     std::vector<uint32_t> visible;
     uint64_t drawn = 0;
-    run_frames(state, [&](const Camera& camera) {
-        culler.cull(camera, visible);
+    run_frames(state, [&](size_t i) {
+        culler.cull(cameras()[i], visible);
         drawn += visible.size();
         benchmark::DoNotOptimize(visible.data());
     });
-    state.counters["regions_drawn"] = double(drawn) / double(state.iterations());
+    state.counters["regions_drawn"] = double(drawn) / double(state.iterations() * cameras().size());
 }
-BENCHMARK(BM_CullOutdoor_Baseline_PerRegion)->ArgName("cold")->Arg(0)->Arg(1)->UseManualTime()->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CullOutdoor_Baseline_PerRegion)->ArgName("cold")->Arg(0)->Arg(1)->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
+
+// A floor, not a culler: only reading the boxes no box hierarchy can settle. A row region whose
+// box is Partial for the frustum (crossing a plane's boundary, outside none) has every enclosing
+// box Partial too, so an exact cull must look at that box itself. This reads, per camera, just
+// those boxes (in region order) and tests nothing: what the memory alone costs a frame. Two
+// layouts: the culler's (one float array per coordinate, as FrustumBoxes keeps them) and the
+// densest a box can be (six bytes, each coordinate quantized over the zone: a quarter of the
+// bytes of a float box).
+class BoundaryBoxReads {
+public:
+    explicit BoundaryBoxReads(const Zone& zone) : coords_(6)
+    {
+        std::vector<Aabb> boxes;
+        const Aabb world = zone.bounds();
+        for (const Region& r : zone.regions) {
+            boxes.push_back(r.bounds);
+            std::array<uint8_t, 6>& q = bytes_.emplace_back();
+            for (int k = 0; k < 3; ++k) {
+                coords_[k].push_back(r.bounds.min[k]);
+                coords_[3 + k].push_back(r.bounds.max[k]);
+                const float extent = std::max(world.max[k] - world.min[k], 1.0f);
+                q[k] = uint8_t(std::clamp(255.0f * (r.bounds.min[k] - world.min[k]) / extent, 0.0f, 255.0f));
+                q[3 + k] = uint8_t(std::clamp(255.0f * (r.bounds.max[k] - world.min[k]) / extent, 0.0f, 255.0f));
+            }
+        }
+        const FrustumBoxes packed(boxes);
+        RegionLocator locator(zone.tree, zone.bounds());
+        std::vector<uint64_t> row(zone.baked_pvs->words_per_row());
+        for (const Camera& camera : cameras()) {
+            std::vector<uint32_t>& ids = partial_.emplace_back();
+            const int32_t region = locator.locate(camera.position).region;
+            if (region < 0)
+                continue;
+            zone.baked_pvs->decode_row(uint32_t(region), row);
+            const auto planes = FrustumBoxes::prepare(Frustum::from_view_projection(camera.view_projection()),
+                                                      FrustumBoxes::Planes::All);
+            bits::for_each_set(std::span<const uint64_t>(row), [&](size_t r) {
+                if (packed.classify(uint32_t(r), planes) == FrustumBoxes::Side::Partial)
+                    ids.push_back(uint32_t(r));
+            });
+        }
+    }
+    // The sum of the boxes' coordinates for camera i (only so that the reads happen).
+    float read_floats(size_t camera) const
+    {
+        float sum = 0.0f;
+        for (const uint32_t r : partial_[camera])
+            for (const std::vector<float>& c : coords_)
+                sum += c[r];
+        return sum;
+    }
+    unsigned read_bytes(size_t camera) const
+    {
+        unsigned sum = 0;
+        for (const uint32_t r : partial_[camera])
+            for (const uint8_t b : bytes_[r])
+                sum += b;
+        return sum;
+    }
+    size_t count(size_t camera) const { return partial_[camera].size(); }
+
+private:
+    std::vector<std::vector<float>> coords_;
+    std::vector<std::array<uint8_t, 6>> bytes_;
+    std::vector<std::vector<uint32_t>> partial_; // per camera, in region order
+};
+
+void BM_CullOutdoor_Floor_ReadBoundaryBoxes(benchmark::State& state)
+{
+    static const BoundaryBoxReads reads(outdoor());
+    uint64_t boxes = 0;
+    const bool bytes = state.range(1) != 0;
+    run_frames(state, [&](size_t i) {
+        if (bytes)
+            benchmark::DoNotOptimize(reads.read_bytes(i));
+        else
+            benchmark::DoNotOptimize(reads.read_floats(i));
+        boxes += reads.count(i);
+    });
+    state.counters["boundary_boxes"] = double(boxes) / double(state.iterations() * cameras().size());
+}
+BENCHMARK(BM_CullOutdoor_Floor_ReadBoundaryBoxes)
+    ->ArgNames({"cold", "bytes"})
+    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 } // namespace
 } // namespace pvs
