@@ -61,6 +61,15 @@ void evict_caches()
     benchmark::DoNotOptimize(buffer.data());
 }
 
+// Every region's box, by id.
+std::vector<Aabb> region_boxes(const Zone& zone)
+{
+    std::vector<Aabb> out;
+    for (const Region& r : zone.regions)
+        out.push_back(r.bounds);
+    return out;
+}
+
 // The per-region stage: the row's regions tested one by one.
 class PerRegionCuller {
 public:
@@ -84,13 +93,6 @@ public:
     }
 
 private:
-    static std::vector<Aabb> region_boxes(const Zone& zone)
-    {
-        std::vector<Aabb> out;
-        for (const Region& r : zone.regions)
-            out.push_back(r.bounds);
-        return out;
-    }
     const Zone& zone_;
     RegionLocator locator_;
     FrustumBoxes boxes_;
@@ -163,10 +165,8 @@ class BoundaryBoxReads {
 public:
     explicit BoundaryBoxReads(const Zone& zone) : coords_(6)
     {
-        std::vector<Aabb> boxes;
         const Aabb world = zone.bounds();
         for (const Region& r : zone.regions) {
-            boxes.push_back(r.bounds);
             std::array<uint8_t, 6>& q = bytes_.emplace_back();
             for (int k = 0; k < 3; ++k) {
                 coords_[k].push_back(r.bounds.min[k]);
@@ -176,7 +176,7 @@ public:
                 q[3 + k] = uint8_t(std::clamp(255.0f * (r.bounds.max[k] - world.min[k]) / extent, 0.0f, 255.0f));
             }
         }
-        const FrustumBoxes packed(boxes);
+        const FrustumBoxes packed(region_boxes(zone));
         RegionLocator locator(zone.tree, zone.bounds());
         std::vector<uint64_t> row(zone.baked_pvs->words_per_row());
         for (const Camera& camera : cameras()) {
