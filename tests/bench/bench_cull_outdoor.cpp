@@ -70,6 +70,21 @@ std::vector<Aabb> region_boxes(const Zone& zone)
     return out;
 }
 
+// Calls visit(r, planes) for each region r of the camera's PVS row (none when the camera is in no
+// region), with the frustum's six planes prepared; `row` is scratch of a row's words.
+template <class Visit>
+void for_each_row_region(const Zone& zone, const RegionLocator& locator, const Camera& camera,
+                         std::vector<uint64_t>& row, Visit&& visit)
+{
+    const int32_t region = locator.locate(camera.position).region;
+    if (region < 0)
+        return;
+    zone.baked_pvs->decode_row(uint32_t(region), row);
+    const auto planes =
+        FrustumBoxes::prepare(Frustum::from_view_projection(camera.view_projection()), FrustumBoxes::Planes::All);
+    bits::for_each_set(std::span<const uint64_t>(row), [&](size_t r) { visit(uint32_t(r), planes); });
+}
+
 // The per-region stage: the row's regions tested one by one.
 class PerRegionCuller {
 public:
@@ -79,16 +94,10 @@ public:
     }
     void cull(const Camera& camera, std::vector<uint32_t>& visible)
     {
-        const int32_t region = locator_.locate(camera.position).region;
         visible.clear();
-        if (region < 0)
-            return;
-        zone_.baked_pvs->decode_row(uint32_t(region), row_);
-        const auto planes = FrustumBoxes::prepare(Frustum::from_view_projection(camera.view_projection()),
-                                                  FrustumBoxes::Planes::All);
-        bits::for_each_set(std::span<const uint64_t>(row_), [&](size_t r) {
-            if (boxes_.intersects(uint32_t(r), planes))
-                visible.push_back(uint32_t(r));
+        for_each_row_region(zone_, locator_, camera, row_, [&](uint32_t r, const FrustumBoxes::PlaneGroups& planes) {
+            if (boxes_.intersects(r, planes))
+                visible.push_back(r);
         });
     }
 
@@ -181,15 +190,9 @@ public:
         std::vector<uint64_t> row(zone.baked_pvs->words_per_row());
         for (const Camera& camera : cameras()) {
             std::vector<uint32_t>& ids = partial_.emplace_back();
-            const int32_t region = locator.locate(camera.position).region;
-            if (region < 0)
-                continue;
-            zone.baked_pvs->decode_row(uint32_t(region), row);
-            const auto planes = FrustumBoxes::prepare(Frustum::from_view_projection(camera.view_projection()),
-                                                      FrustumBoxes::Planes::All);
-            bits::for_each_set(std::span<const uint64_t>(row), [&](size_t r) {
-                if (packed.classify(uint32_t(r), planes) == FrustumBoxes::Side::Partial)
-                    ids.push_back(uint32_t(r));
+            for_each_row_region(zone, locator, camera, row, [&](uint32_t r, const FrustumBoxes::PlaneGroups& planes) {
+                if (packed.classify(r, planes) == FrustumBoxes::Side::Partial)
+                    ids.push_back(r);
             });
         }
     }
