@@ -205,7 +205,7 @@ TEST(GlPvsWriter, ReplacesGlbspsPlaceholderInTheGwa)
     EXPECT_FALSE(result.reject_written);
     EXPECT_EQ(result.backup_file, dir.path("freedoom2.~gw"));
     EXPECT_TRUE(result.wad_backup_file.empty());
-    EXPECT_TRUE(read_whole_file(result.backup_file) == original.bytes) << "the backup is the original file";
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(result.backup_file), original.bytes)) << "the backup is the original file";
     EXPECT_EQ(dir.names(), (std::set<std::string>{"freedoom2.gwa", "freedoom2.~gw"})) << "no temporary left behind";
 
     const WadFile written = read_wad(gwa);
@@ -216,7 +216,7 @@ TEST(GlPvsWriter, ReplacesGlbspsPlaceholderInTheGwa)
     // Again: the older backup is replaced by the file as it was before this write.
     const Pvs again = pattern_pvs(n, 2);
     write_gl_pvs(source, again, {}, 0);
-    EXPECT_TRUE(read_whole_file(result.backup_file) == written.bytes);
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(result.backup_file), written.bytes));
     expect_gl_pvs_rows(read_wad(gwa).data(source.gl_marker + 5), again);
 }
 
@@ -237,7 +237,7 @@ TEST(GlPvsWriter, InsertsAfterGlNodesInZdbspsWad)
     const GlPvsWriteResult result = write_gl_pvs(source, pvs, {}, 0);
     EXPECT_TRUE(result.inserted);
     EXPECT_EQ(result.backup_file, dir.path("freedoom2.~wa"));
-    EXPECT_TRUE(read_whole_file(result.backup_file) == original.bytes);
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(result.backup_file), original.bytes));
 
     const WadFile written = read_wad(wad);
     expect_lumps_kept(original, written, source.gl_marker + 5, {});
@@ -308,8 +308,8 @@ TEST(GlPvsWriter, RejectGoesToTheWadBesideTheGwa)
     EXPECT_TRUE(result.reject_written);
     EXPECT_EQ(result.backup_file, dir.path("freedoom2.~gw"));
     EXPECT_EQ(result.wad_backup_file, dir.path("freedoom2.~wa"));
-    EXPECT_TRUE(read_whole_file(result.backup_file) == original_gwa.bytes);
-    EXPECT_TRUE(read_whole_file(result.wad_backup_file) == original_wad.bytes);
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(result.backup_file), original_gwa.bytes));
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(result.wad_backup_file), original_wad.bytes));
 
     const WadFile written_gwa = read_wad(gwa);
     expect_lumps_kept(original_gwa, written_gwa, std::nullopt, {source.gl_marker + 5});
@@ -360,7 +360,7 @@ TEST(GlPvsWriter, WrongSizePvsThrowsAndLeavesTheFileAlone)
     past_the_end[n / 2] = sectors;
     EXPECT_THROW(write_gl_pvs(source, pvs, past_the_end, sectors, reject), std::invalid_argument);
 
-    EXPECT_TRUE(read_whole_file(wad) == original.bytes);
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(wad), original.bytes));
     EXPECT_EQ(dir.names(), (std::set<std::string>{"freedoom2.wad"})) << "no backup, no temporary";
 }
 
@@ -399,7 +399,7 @@ TEST(GlPvsWriter, MapSourceNotMatchingTheFileThrowsFileError)
     expect_file_error(at, sectors, reject);
     expect_file_error(good, sectors + 1, reject); // SECTORS holds another count
 
-    EXPECT_TRUE(read_whole_file(wad) == original.bytes);
+    EXPECT_TRUE(std::ranges::equal(read_whole_file(wad), original.bytes));
     EXPECT_EQ(dir.names(), (std::set<std::string>{"freedoom2.wad"}));
 }
 

@@ -28,7 +28,7 @@ std::vector<uint8_t> read_whole_file(const std::string& path)
     return bytes;
 }
 
-void write_whole_file(const std::string& path, const std::vector<uint8_t>& bytes)
+void write_whole_file(const std::string& path, std::span<const uint8_t> bytes)
 {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out)

@@ -3,12 +3,17 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace pvs {
 
 std::vector<uint8_t> read_whole_file(const std::string& path);
-void write_whole_file(const std::string& path, const std::vector<uint8_t>& bytes);
+void write_whole_file(const std::string& path, std::span<const uint8_t> bytes);
+inline void write_whole_file(const std::string& path, const std::vector<uint8_t>& bytes)
+{
+    write_whole_file(path, std::span<const uint8_t>(bytes));
+}
 
 } // namespace pvs

@@ -144,7 +144,7 @@ bool same_file(const std::string& a, const std::string& b)
 
 // Readers see the old file or the new one, never half of one: the bytes go to a temporary
 // beside `path` (same file system, so the rename is atomic), which then replaces it.
-void replace_atomically(const std::string& path, const std::vector<uint8_t>& bytes)
+void replace_atomically(const std::string& path, std::span<const uint8_t> bytes)
 {
     const std::string temporary = path + ".tmp" + std::to_string(::getpid());
     std::error_code ec;

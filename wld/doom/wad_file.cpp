@@ -1,6 +1,7 @@
 #include "wld/doom/wad_file.h"
 
 #include "wld/common/byte_reader.h"
+#include "wld/common/mapped_file.h"
 #include "wld/common/read_file.h"
 
 #include <algorithm>
@@ -91,11 +92,14 @@ bool file_looks_like_wad(const std::string& path)
     return read && looks_like_wad(magic);
 }
 
-WadFile parse_wad(std::vector<uint8_t> bytes, std::string path)
+namespace {
+
+WadFile parse_wad_bytes(FileBytes file, std::string path)
 {
     WadFile wad;
     wad.path = std::move(path);
-    wad.bytes = std::move(bytes);
+    wad.bytes = file.bytes;
+    wad.storage = std::move(file.storage);
     const ByteReader reader(wad.bytes, wad.path);
     reader.require(0, 12, "WAD header");
     if (!looks_like_wad(wad.bytes))
@@ -129,7 +133,15 @@ WadFile parse_wad(std::vector<uint8_t> bytes, std::string path)
     return wad;
 }
 
-WadFile read_wad(const std::string& path) { return parse_wad(read_whole_file(path), path); }
+} // namespace
+
+WadFile parse_wad(std::vector<uint8_t> bytes, std::string path)
+{
+    auto buffer = std::make_shared<std::vector<uint8_t>>(std::move(bytes));
+    return parse_wad_bytes({std::span<const uint8_t>(*buffer), buffer}, std::move(path));
+}
+
+WadFile read_wad(const std::string& path) { return parse_wad_bytes(map_whole_file(path), path); }
 
 std::vector<uint8_t> write_wad(bool iwad, std::span<const WadLumpData> lumps)
 {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -30,7 +31,8 @@ struct WadLump {
 struct WadFile {
     std::string path;
     bool iwad = false;
-    std::vector<uint8_t> bytes;
+    std::span<const uint8_t> bytes;       // the whole file
+    std::shared_ptr<const void> storage;  // what holds `bytes` (a mapping, or the buffer parsed)
     std::vector<WadLump> lumps;
 
     std::span<const uint8_t> data(size_t lump) const
@@ -45,7 +47,8 @@ struct WadFile {
 
 // Parses a WAD held in memory (`path` names it in errors). Throws FileError.
 WadFile parse_wad(std::vector<uint8_t> bytes, std::string path);
-// Reads and parses a WAD or .gwa file. Throws FileError.
+// Reads and parses a WAD or .gwa file (mapped: only the pages of the lumps read are read; see
+// wld/common/mapped_file.h). Throws FileError.
 WadFile read_wad(const std::string& path);
 
 // A name field of a WAD (lump, texture, flat: 8 bytes): upper case, ending at the first NUL or
