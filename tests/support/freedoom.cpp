@@ -34,14 +34,26 @@ const char* gl_builder_name(GlBuilder builder)
 
 namespace {
 
+// GL nodes are made once per user and WAD, not once per test process (ctest runs each test in a
+// process of its own): files named after the WAD's size and time stamp in a folder per user,
+// each made under a name of its own and renamed into place, so concurrent tests share them safely.
 fs::path scratch_dir()
 {
     static const fs::path dir = [] {
-        fs::path d = fs::temp_directory_path() / ("pvscope-gl-nodes-" + std::to_string(getpid()));
+        fs::path d = fs::temp_directory_path() / ("pvscope-gl-nodes-" + std::to_string(getuid()));
         fs::create_directories(d);
         return d;
     }();
     return dir;
+}
+
+// The WAD's identity for the cache: its size and modification time.
+std::string wad_key(const std::string& wad)
+{
+    std::error_code ec;
+    const auto size = fs::file_size(wad, ec);
+    const auto time = fs::last_write_time(wad, ec).time_since_epoch().count();
+    return std::to_string(size) + "-" + std::to_string(time);
 }
 
 std::string shell_quoted(const std::string& s) { return "'" + s + "'"; }
@@ -56,7 +68,7 @@ std::optional<std::string> gl_nodes_file(const std::string& wad, GlBuilder build
     auto [slot, fresh] = made.try_emplace({wad, builder});
     if (!fresh)
         return slot->second;
-    const std::string stem = fs::path(wad).stem().string();
+    const std::string stem = fs::path(wad).stem().string() + "-" + wad_key(wad);
     const int tag = int(builder);
     std::string out, command;
     switch (builder) {
@@ -75,9 +87,23 @@ std::optional<std::string> gl_nodes_file(const std::string& wad, GlBuilder build
                   " " + shell_quoted(wad);
         break;
     }
-    command += " > /dev/null 2>&1";
-    if (std::system(command.c_str()) == 0 && fs::exists(out))
+    std::error_code ec;
+    if (fs::exists(out, ec)) { // made by an earlier test process
         slot->second = out;
+        return slot->second;
+    }
+    // Made under a name of this process's, then renamed: readers see no half-written file.
+    const std::string mine = out + "." + std::to_string(getpid());
+    const std::string made_here = mine + fs::path(out).extension().string();
+    std::string own_command = command;
+    own_command.replace(own_command.find(shell_quoted(out)), shell_quoted(out).size(), shell_quoted(made_here));
+    own_command += " > /dev/null 2>&1";
+    if (std::system(own_command.c_str()) == 0 && fs::exists(made_here, ec)) {
+        fs::rename(made_here, out, ec);
+        if (!ec || fs::exists(out))
+            slot->second = out;
+    }
+    fs::remove(made_here, ec);
     return slot->second;
 }
 
