@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglm-dev zlib1g-dev nlohmann-json3-dev libcli11-dev libtbb-dev libstb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libgmp-dev
   libirrlicht-dev libglfw3-dev libimgui-dev libsquish-dev libtinyobjloader-dev libembree-dev
   libcairo2-dev
   libgl-dev xvfb xauth libgl1-mesa-dri

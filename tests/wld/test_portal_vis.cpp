@@ -571,6 +571,27 @@ TEST(PortalVis, SymmetryAndDominatedWindowsDropNoRealBit)
                 dropped, report.seconds);
 }
 
+// Walking per region (VisParams::Source::Region) holds every sampled sight line, enters fewer
+// leaves than walking per portal, and is the same at any thread count.
+TEST(PortalVis, RegionSourcesMissNoRealBitAndEnterFewerLeaves)
+{
+    SHARED_DATA_OR_SKIP(path, kSpeedUpMap);
+    const QuakeBake* b = quake_bake(kSpeedUpMap);
+    ASSERT_NE(b, nullptr);
+    VisReport two, three;
+    const auto by_region = [](VisParams& p) { p.source = VisParams::Source::Region; };
+    const Rows rows = full_rows_without(*b, by_region, two);
+    const Rows& reference = reference_rows(kSpeedUpMap);
+    EXPECT_EQ(bits_only_in(reference, rows), 0u) << "a sampled sight line missing";
+    EXPECT_LT(two.frames, b->full_report.frames);
+    VisParams params;
+    params.threads = 3;
+    params.source = VisParams::Source::Region;
+    EXPECT_EQ(rows, rows_of(bake_portal_vis(b->portals, b->regions, params, &three)));
+    EXPECT_EQ(two.frames, three.frames);
+    EXPECT_EQ(two.clips, three.clips);
+}
+
 void expect_only_self(const Pvs& pvs, uint32_t n)
 {
     ASSERT_EQ(pvs.region_count(), n);

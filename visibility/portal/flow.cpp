@@ -86,6 +86,7 @@ WRef FlowWorker::clip_to_frame_separators(WRef w, Frame& f, const Frame& prev, c
                 if (!found)
                     break; // no edge left
                 ++cache.count;
+                ++separators_;
             }
             w = clip(w, cache.planes[k], f);
         }
@@ -140,11 +141,10 @@ void FlowWorker::narrow_mightsee_into(Frame& f, const Frame& prev, const RunRow&
     f.hi = w;
 }
 
-bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
-                     const std::atomic<bool>& cancel)
+bool FlowWorker::walk(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
+                      const std::atomic<bool>& cancel)
 {
     const DirectedPortal& p = g_.portals[pi];
-    std::fill(vis_.begin(), vis_.end(), 0);
 
     Frame& head = frame(0);
     head.source = portal_winding(pi);
@@ -261,6 +261,7 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
             continue;
         // Test 2: target -> pass separators clip the source. Test 3: pass -> target, mirrored.
         const auto clip_source = [&](const DPlane& sep) {
+            ++separators_;
             source = clip(source, sep, f);
             return bool(source);
         };
@@ -288,7 +289,6 @@ bool FlowWorker::run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, co
             leave();
         return false;
     }
-    portal_visible_ += bits::count(vis_);
     return true;
 }
 

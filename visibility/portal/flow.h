@@ -45,7 +45,22 @@ public:
     // portal q may still reach (its visbits or its mightsee), or nullptr when the bake is
     // cancelled. Returns false when cancelled.
     bool run(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
-             const std::atomic<bool>& cancel);
+             const std::atomic<bool>& cancel)
+    {
+        begin_row();
+        if (!walk(pi, rank, head_mightsee, prune_rows, cancel))
+            return false;
+        end_row();
+        return true;
+    }
+    // A region's row (VisParams::Source::Region): begin_row(), then walk() for each of its
+    // outgoing portals - they share vis(), so a walk stops where its siblings already saw what it
+    // could add - then end_row(). `rank` is then the region's.
+    void begin_row() { std::fill(vis_.begin(), vis_.end(), 0); }
+    bool walk(uint32_t pi, uint32_t rank, const RunRow& head_mightsee, const PruneRows& prune_rows,
+              const std::atomic<bool>& cancel);
+    void end_row() { portal_visible_ += bits::count(vis_); }
+    void mark_visible(uint32_t leaf) { bits::set(vis_, leaf); }
 
     std::span<const uint64_t> vis() const { return vis_; }
     void use_passages(const Passages* p) { passages_ = p; }
@@ -67,6 +82,10 @@ public:
     size_t frames_entered() const { return frames_entered_; }
     size_t portal_visible() const { return portal_visible_; }
     size_t dominated_windows() const { return memo_.dominated(); }
+    // Windings clipped (the flow's, the target checks' and the passage floods'), and separating
+    // planes found: with frames_entered(), the work counters of the flow (deterministic).
+    size_t clips() const { return clips_; }
+    size_t separators() const { return separators_; }
     uint64_t wait_nanos() const { return wait_nanos_; } // waiting for older portals' visbits
     size_t bytes() const
     {
@@ -95,6 +114,7 @@ private:
     // clip_winding (flow_frame.h) with this worker's scratch.
     WRef clip(const WRef& in, const DPlane& split, Frame& f)
     {
+        ++clips_;
         return clip_winding(in, split, f, dists_.data(), sides_.data());
     }
 
@@ -151,6 +171,8 @@ private:
     size_t leaf_recursions_ = 0;
     size_t frames_entered_ = 0;
     size_t portal_visible_ = 0;
+    size_t clips_ = 0;
+    size_t separators_ = 0;
     uint64_t wait_nanos_ = 0;
     const Passages* passages_ = nullptr;
     std::vector<uint64_t> ones_;

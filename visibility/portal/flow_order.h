@@ -28,36 +28,43 @@ FlowOrder rank_portals(const std::vector<uint32_t>& nummightsee);
 class PruneRows {
 public:
     // visbits[q] is read only once state[q] is kDone (written before the release store).
-    PruneRows(const uint32_t* rank, std::atomic<uint8_t>* state, const RunRow* mightsee, const RunRow* visbits)
-        : lag_(rank, state, kPruneLag), mightsee_(mightsee), visbits_(visbits)
+    // Per portal (item_of == nullptr): rank, state and visbits are per directed portal. Per region
+    // (VisParams::Source::Region): they are per region, and the final row used at directed portal
+    // qi is that of the region it leads into, item_of[qi] (every leaf a line through qi reaches is
+    // seen from there).
+    PruneRows(const uint32_t* rank, std::atomic<uint8_t>* state, const RunRow* mightsee, const RunRow* visbits,
+              const uint32_t* item_of = nullptr)
+        : lag_(rank, state, kPruneLag), mightsee_(mightsee), visbits_(visbits), item_of_(item_of)
     {
     }
 
-    // The row the portal of rank r prunes with at directed portal qi; waiting time is added to
+    // The row the walk of rank r prunes with at directed portal qi; waiting time is added to
     // waited_nanos. Inline: called once per flow step.
     RunRow row(uint32_t qi, uint32_t r, uint64_t& waited_nanos) const
     {
-        if (!lag_.uses_final(qi, r))
+        const uint32_t q = item_of_ ? item_of_[qi] : qi;
+        if (!lag_.uses_final(q, r))
             return mightsee_[qi];
-        return lag_.await_final(qi, waited_nanos) ? visbits_[qi] : RunRow{};
+        return lag_.await_final(q, waited_nanos) ? visbits_[q] : RunRow{};
     }
 
     // Starts loading the row row(qi, r) would return, when it is there already (never waits).
     void prefetch(uint32_t qi, uint32_t r) const
     {
-        const RunRow* rows = mightsee_;
-        if (lag_.uses_final(qi, r)) {
-            if (!lag_.final_written(qi))
-                return;
-            rows = visbits_;
+        const uint32_t q = item_of_ ? item_of_[qi] : qi;
+        if (!lag_.uses_final(q, r)) {
+            __builtin_prefetch(mightsee_[qi].data);
+            return;
         }
-        __builtin_prefetch(rows[qi].data);
+        if (lag_.final_written(q))
+            __builtin_prefetch(visbits_[q].data);
     }
 
 private:
     PruneLag lag_;
     const RunRow* mightsee_;
     const RunRow* visbits_;
+    const uint32_t* item_of_;
 };
 
 } // namespace pvs::portal_vis

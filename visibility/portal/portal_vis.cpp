@@ -52,6 +52,11 @@ struct Bake {
     std::mutex worker_bytes_mutex;
     size_t passage_row_bytes = 0;
     size_t narrowing_row_bytes = 0; // base rows and their narrowed copies, both held for a moment
+    // Source::Region: each region's row, its state, and each directed portal's destination region.
+    std::vector<RunRow> region_rows;
+    std::unique_ptr<std::atomic<uint8_t>[]> region_state;
+    std::vector<uint32_t> leaf_of_portal;
+    bool by_region() const { return params.source == VisParams::Source::Region; }
 
     Bake(const Graph& graph, const VisParams& p, int lvl, unsigned workers)
         : g(graph), params(p), level(lvl), n(uint32_t(graph.portals.size())), threads(workers),
@@ -113,7 +118,24 @@ struct FlowTotals {
     std::atomic<size_t> frames{0}, portal_visible{0};
     std::atomic<size_t> target_checks{0}, target_check_prunes{0};
     std::atomic<size_t> dominated_windows{0};
+    std::atomic<size_t> clips{0}, separators{0};
 };
+
+// Adds a worker's counters to the bake's totals.
+void add_worker_totals(Bake& b, const FlowWorker& worker, FlowTotals& totals)
+{
+    totals.target_checks.fetch_add(worker.target_checks());
+    totals.target_check_prunes.fetch_add(worker.target_check_prunes());
+    totals.wait_nanos.fetch_add(worker.wait_nanos());
+    totals.leaf_recursions.fetch_add(worker.leaf_recursions());
+    totals.frames.fetch_add(worker.frames_entered());
+    totals.portal_visible.fetch_add(worker.portal_visible());
+    totals.dominated_windows.fetch_add(worker.dominated_windows());
+    totals.clips.fetch_add(worker.clips());
+    totals.separators.fetch_add(worker.separators());
+    std::lock_guard lock(b.worker_bytes_mutex);
+    b.worker_bytes += worker.bytes();
+}
 
 // One worker of the flow: portals in rank order from `next` until none is left or the bake is
 // cancelled; each finished portal's visbits are published through its state.
@@ -153,23 +175,85 @@ void flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* pa
         if (!ok)
             break;
     }
-    totals.target_checks.fetch_add(worker.target_checks());
-    totals.target_check_prunes.fetch_add(worker.target_check_prunes());
-    totals.wait_nanos.fetch_add(worker.wait_nanos());
-    totals.leaf_recursions.fetch_add(worker.leaf_recursions());
-    totals.frames.fetch_add(worker.frames_entered());
-    totals.portal_visible.fetch_add(worker.portal_visible());
-    totals.dominated_windows.fetch_add(worker.dominated_windows());
-    std::lock_guard lock(b.worker_bytes_mutex);
-    b.worker_bytes += worker.bytes();
+    add_worker_totals(b, worker, totals);
+}
+
+// Source::Region: regions in rank order from `next`; each region's portals walk into one row,
+// published through the region's state.
+void region_flow_worker(Bake& b, unsigned t, const FlowOrder& order, const Passages* passages,
+                        std::atomic<uint32_t>& next, std::atomic<uint64_t>& done_weight, FlowTotals& totals)
+{
+    const Graph& g = b.g;
+    FlowWorker worker(g, b.level);
+    worker.use_target_checks(b.params.target_checks);
+    worker.watch(b.params.probe);
+    worker.use_symmetry(b.params.symmetry);
+    worker.use_window_memo(b.params.dominated_windows);
+    if (passages != nullptr)
+        worker.use_passages(passages);
+    const PruneRows prune_rows(order.rank.data(), b.region_state.get(), b.mightsee.data(), b.region_rows.data(),
+                               b.leaf_of_portal.data());
+    std::vector<uint64_t> encoded;
+    const uint32_t regions = g.leaf_count;
+    while (!b.cancel.load(std::memory_order_relaxed)) {
+        const uint32_t r = next.fetch_add(1);
+        if (r >= regions)
+            break;
+        const uint32_t region = order.order[r];
+        FlowTicket ticket(b.region_state[region]);
+        if (b.cancel.load(std::memory_order_relaxed))
+            break;
+        bool ok = true;
+        uint64_t weight = 0;
+        try {
+            worker.begin_row();
+            worker.mark_visible(region);
+            for (uint32_t k = g.leaf_first[region]; k < g.leaf_first[region + 1] && ok; ++k) {
+                const uint32_t pi = g.leaf_portals[k];
+                ok = worker.walk(pi, r, b.mightsee[pi], prune_rows, b.cancel);
+                weight += b.nummightsee[pi];
+            }
+            if (ok) {
+                worker.end_row();
+                encode_runs(worker.vis(), encoded);
+                b.region_rows[region] = b.vis_pools[t].append(encoded);
+                ticket.done();
+            }
+        } catch (...) {
+            b.cancel.store(true);
+            throw;
+        }
+        done_weight.fetch_add(weight, std::memory_order_relaxed);
+        if (!ok)
+            break;
+    }
+    add_worker_totals(b, worker, totals);
+}
+
+// Source::Region: regions ranked by the summed mightsee of their portals.
+FlowOrder rank_regions(const Bake& b)
+{
+    std::vector<uint32_t> weight(b.g.leaf_count, 0);
+    for (uint32_t pi = 0; pi < b.n; ++pi)
+        weight[b.g.portals[pi].owner] += b.nummightsee[pi];
+    return rank_portals(weight);
 }
 
 // Full: ranking, passages, then the flow of every portal in rank order.
 void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
 {
-    b.visbits.assign(b.n, RunRow{});
     b.vis_pools.resize(b.threads);
-    const FlowOrder order = rank_portals(b.nummightsee);
+    if (b.by_region()) {
+        b.region_rows.assign(b.g.leaf_count, RunRow{});
+        b.region_state.reset(new std::atomic<uint8_t>[b.g.leaf_count]);
+        for (uint32_t r = 0; r < b.g.leaf_count; ++r)
+            b.region_state[r].store(kNone, std::memory_order_relaxed);
+        b.leaf_of_portal.resize(b.n);
+        for (uint32_t pi = 0; pi < b.n; ++pi)
+            b.leaf_of_portal[pi] = b.g.portals[pi].leaf;
+    } else
+        b.visbits.assign(b.n, RunRow{});
+    const FlowOrder order = b.by_region() ? rank_regions(b) : rank_portals(b.nummightsee);
     uint64_t total_weight = 0;
     for (uint32_t i = 0; i < b.n; ++i)
         total_weight += b.nummightsee[i];
@@ -194,7 +278,12 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     FlowTotals totals;
     const bool kept_going = run_workers(
         b.threads,
-        [&](unsigned t) { flow_worker(b, t, order, use_passages ? &passages : nullptr, next, done_weight, totals); },
+        [&](unsigned t) {
+            if (b.by_region())
+                region_flow_worker(b, t, order, use_passages ? &passages : nullptr, next, done_weight, totals);
+            else
+                flow_worker(b, t, order, use_passages ? &passages : nullptr, next, done_weight, totals);
+        },
         b.cancel, b.params.progress,
         [&] {
             const double before = kBaseWeight + (use_passages ? kPassageWeight : 0.0);
@@ -208,12 +297,20 @@ void run_flow(Bake& b, Clock::time_point start, VisReport& rep)
     rep.target_checks = totals.target_checks.load();
     rep.target_check_prunes = totals.target_check_prunes.load();
     rep.dominated_windows = totals.dominated_windows.load();
+    rep.clips = totals.clips.load();
+    rep.separators = totals.separators.load();
     rep.wait_seconds = double(totals.wait_nanos.load()) * 1e-9;
 }
 
 // Whether every directed portal has its visbits (a cancelled flow leaves some with mightsee only).
 bool every_flow_done(const Bake& b)
 {
+    if (b.by_region()) {
+        for (uint32_t r = 0; r < b.g.leaf_count; ++r)
+            if (b.region_state[r].load(std::memory_order_acquire) != kDone)
+                return false;
+        return true;
+    }
     for (uint32_t i = 0; i < b.n; ++i)
         if (b.state[i].load(std::memory_order_acquire) != kDone)
             return false;
@@ -240,6 +337,12 @@ Pvs aggregate(Bake& b, bool base_done, bool flow_started, VisReport& rep)
     Pvs pvs = Pvs::build(region_count, [&](uint32_t r, std::span<uint64_t> row) {
         if (!base_done) {
             bits::fill(row, region_count); // cancelled early: everything may be visible
+        } else if (flow_started && b.by_region() && b.region_state[r].load(std::memory_order_acquire) == kDone) {
+            b.region_rows[r].or_into(row.data());
+        } else if (flow_started && b.by_region()) {
+            for (uint32_t k = g.leaf_first[r]; k < g.leaf_first[r + 1]; ++k)
+                b.mightsee[g.leaf_portals[k]].or_into(row.data());
+            bits::set(row, r);
         } else {
             for (uint32_t k = g.leaf_first[r]; k < g.leaf_first[r + 1]; ++k) {
                 const uint32_t pi = g.leaf_portals[k];

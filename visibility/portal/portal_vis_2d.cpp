@@ -2,10 +2,12 @@
 
 #include "visibility/bit_row.h"
 #include "visibility/portal/prune_lag.h"
+#include "visibility/portal/segment_clip_2d.h"
 #include "visibility/worker_pool.h"
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -18,43 +20,18 @@ namespace {
 using portal_vis::FlowTicket;
 using portal_vis::PruneLag;
 
-// The flow's tolerances (portal_vis_2d.h, "Conservative"):
-//  - kOnLine: a segment is in front of a line when some point of it is more than kOnLine in
-//    front. Lines through a segment with no point further in front pass within kOnLine of
-//    the line's wall: a window under 2 kOnLine wide, far below what a pixel or the reference's
-//    beam (0.05) can show, and exactly nothing for the collinear portals Doom's split lines make
-//    (walks along them would otherwise multiply). glVIS's ON_EPSILON was 0.1 here, which lost
-//    sight lines up to 0.1 wide.
-//  - kSlack: a clip keeps the part of a segment up to kSlack behind its line, a superset of the
-//    exact front part. kSlack is three orders above the round-off of a clip or a separator (a
-//    line through two points at least kMinSeparator apart, coordinates up to 2^15: its distance
-//    error 2^15 units away is about 1e-6).
-//  - kMinSeparator: separators through two points closer than this are not used (glVIS's
-//    ON_EPSILON as a length): not clipping is always safe, and a short base makes a line whose
-//    direction round-off grows with distance.
-constexpr double kOnLine = 1e-6;
-constexpr double kSlack = 1e-3;
-constexpr double kMinSeparator = 0.1;
 // Portals ranked more than this below a walk's own prune it with their final vis. Part of the
 // definition of the result. 8 rather than the 3-D baker's 32: the 2-D walks are short, so a
 // smaller lag seldom makes a thread wait and prunes more (MAP28 1.82 s -> 1.73 s).
 constexpr uint32_t kPruneLag2d = 8;
+// Target checks look at most this many unseen leaves (as the 3-D flow's).
+constexpr uint32_t kTargetCheckLeaves = 64;
 
-struct Vec2 {
-    double x = 0, y = 0;
-};
-inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 
-struct Line {
-    Vec2 n; // unit normal
-    double d = 0;
-    double distance(Vec2 p) const { return dot(n, p) - d; }
-    Line flipped() const { return {{-n.x, -n.y}, -d}; }
-};
-
-struct Segment {
-    Vec2 p[2];
-};
+using flow2d::FlowTolerances2d;
+using flow2d::Line;
+using flow2d::Segment;
+using flow2d::Vec2;
 
 struct Portal2 {
     Segment seg;
@@ -71,6 +48,7 @@ struct Graph {
     uint32_t leaf_count = 0;
     size_t words = 0;
     size_t skipped = 0;
+    FlowTolerances2d tol; // for the largest coordinate of any portal (segment_clip_2d.h)
 };
 
 // The portal's segment and line in the plane, or false when it is not a vertical portal.
@@ -129,6 +107,11 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
         g.portals.push_back({seg, line, uint32_t(r0), uint32_t(r1)});
         g.input_portal.push_back(input);
     }
+    double extent = 0;
+    for (const Portal2& p : g.portals)
+        for (const Vec2& v : p.seg.p)
+            extent = std::max({extent, std::abs(v.x), std::abs(v.y)});
+    g.tol = FlowTolerances2d::for_extent(extent);
     g.first_of_leaf.assign(region_count + 1, 0);
     for (const Portal2& p : g.portals)
         ++g.first_of_leaf[p.owner + 1];
@@ -138,16 +121,6 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
     for (uint32_t i = 0; i < g.portals.size(); ++i)
         g.order[fill[g.portals[i].owner]++] = i;
     return g;
-}
-
-// Some point more than kOnLine in front of (behind) `l`.
-bool has_point_in_front(const Segment& s, const Line& l)
-{
-    return l.distance(s.p[0]) > kOnLine || l.distance(s.p[1]) > kOnLine;
-}
-bool has_point_behind(const Segment& s, const Line& l)
-{
-    return l.distance(s.p[0]) < -kOnLine || l.distance(s.p[1]) < -kOnLine;
 }
 
 // Base vis of directed portal pi: the leaves a flood through the portals in front of it reaches.
@@ -162,88 +135,13 @@ void base_vis(const Graph& g, uint32_t pi, std::vector<uint32_t>& stack, uint64_
         stack.pop_back();
         for (uint32_t k = g.first_of_leaf[leaf]; k < g.first_of_leaf[leaf + 1]; ++k) {
             const Portal2& t = g.portals[g.order[k]];
-            if (bits::test(row, t.leaf) || !has_point_in_front(t.seg, p.line) || !has_point_behind(p.seg, t.line))
+            if (bits::test(row, t.leaf) || !flow2d::has_point_in_front(t.seg, p.line, g.tol) ||
+                !flow2d::has_point_behind(p.seg, t.line, g.tol))
                 continue;
             bits::set(row, t.leaf);
             stack.push_back(t.leaf);
         }
     }
-}
-
-// Keeps the part of `s` in front of `l`, and up to kSlack behind it: a superset of the exact
-// front part. False when no point of `s` is more than kOnLine in front; `s` unchanged when none
-// is more than kSlack behind.
-[[gnu::always_inline]] inline bool clip_front(Segment& s, const Line& l)
-{
-    const double d0 = l.distance(s.p[0]), d1 = l.distance(s.p[1]);
-    if (!(d0 > kOnLine) && !(d1 > kOnLine))
-        return false;
-    const bool back0 = d0 < -kSlack, back1 = d1 < -kSlack;
-    if (!back0 && !back1)
-        return true;
-    const double t = (d0 + kSlack) / (d0 - d1); // where the distance is -kSlack
-    const Vec2 mid{s.p[0].x + t * (s.p[1].x - s.p[0].x), s.p[0].y + t * (s.p[1].y - s.p[0].y)};
-    s.p[back0 ? 0 : 1] = mid;
-    return true;
-}
-
-// clip_front against the line through `b` with the unnormalised normal `n` (|n|^2 = length2):
-// distances are n . (p - b), compared as squares against the tolerances times |n|, so a clip that
-// cuts nothing (most separator clips) takes no square root.
-[[gnu::always_inline]] inline bool clip_front_scaled(Segment& s, Vec2 n, Vec2 b, double length2)
-{
-    const double d0 = n.x * (s.p[0].x - b.x) + n.y * (s.p[0].y - b.y);
-    const double d1 = n.x * (s.p[1].x - b.x) + n.y * (s.p[1].y - b.y);
-    const double on2 = kOnLine * kOnLine * length2, slack2 = kSlack * kSlack * length2;
-    if (!(d0 > 0 && d0 * d0 > on2) && !(d1 > 0 && d1 * d1 > on2))
-        return false;
-    const bool back0 = d0 < 0 && d0 * d0 > slack2, back1 = d1 < 0 && d1 * d1 > slack2;
-    if (!back0 && !back1)
-        return true;
-    const double t = (d0 + kSlack * std::sqrt(length2)) / (d0 - d1); // where the distance is -kSlack
-    const Vec2 mid{s.p[0].x + t * (s.p[1].x - s.p[0].x), s.p[0].y + t * (s.p[1].y - s.p[0].y)};
-    s.p[back0 ? 0 : 1] = mid;
-    return true;
-}
-
-// Quake's ClipToSeparators in the plane: for each endpoint of `source`, the first endpoint of
-// `pass` giving a line with the other source endpoint strictly on one side and the other pass
-// endpoint strictly on the other; `target` is clipped to the pass side (the source side when
-// `flip`). False when the target is clipped away.
-bool clip_to_separators(const Segment& source, const Segment& pass, Segment& target, bool flip)
-{
-    for (int i = 0; i < 2; ++i) {
-        const Vec2 a = source.p[i], other_a = source.p[1 - i];
-        for (int j = 0; j < 2; ++j) {
-            const Vec2 b = pass.p[j];
-            const Vec2 v{b.x - a.x, b.y - a.y};
-            const double length2 = v.x * v.x + v.y * v.y;
-            if (length2 < kMinSeparator * kMinSeparator)
-                continue;
-            // The candidate's unnormalised normal: distances are compared against kSlack times
-            // its length, so only the line that is used needs a square root. (|d| <= slack *
-            // length is tested as d^2 <= slack^2 * length^2.) A candidate is used only when the
-            // other source end is surely behind it and the other pass end surely in front: then
-            // every line from the source through the pass stays in front beyond the pass, so the
-            // clip removes nothing visible; an unsure candidate is skipped, which only adds.
-            Vec2 n{-v.y, v.x};
-            const double limit2 = kSlack * kSlack * length2;
-            double ds = n.x * (other_a.x - b.x) + n.y * (other_a.y - b.y);
-            if (ds * ds <= limit2)
-                continue; // the source lies along it
-            if (ds > 0)
-                n = {-n.x, -n.y}; // the source behind
-            const double dp = n.x * (pass.p[1 - j].x - b.x) + n.y * (pass.p[1 - j].y - b.y);
-            if (!(dp > 0 && dp * dp > limit2))
-                continue; // the pass not strictly in front: not a separator
-            if (flip)
-                n = {-n.x, -n.y};
-            if (!clip_front_scaled(target, n, b, length2))
-                return false;
-            break;
-        }
-    }
-    return true;
 }
 
 struct Frame {
@@ -252,25 +150,43 @@ struct Frame {
     Segment source, pass;
     Line line;
     bool has_pass = false;
+    // The separators from source through pass, found when first needed (sep_count < 0: not yet):
+    // the targets leaving this frame's leaf whose clip leaves the source whole, and the target
+    // checks, all use these.
+    flow2d::SeparatorLine seps[2];
+    int sep_count = -1;
 };
 
 class Walker {
 public:
-    Walker(const Graph& g, int level, const std::vector<uint64_t>& flood, const std::vector<uint64_t>& vis,
+    Walker(const Graph& g, int level, const std::vector<uint64_t>& flood, const std::vector<uint64_t>& rows,
            const std::vector<uint32_t>& rank, const std::atomic<uint8_t>* state, const std::atomic<bool>& stop)
-        : g_(g), level_(level), flood_(flood), vis_(vis), rank_(rank), lag_(rank.data(), state, kPruneLag2d), stop_(stop),
-          on_chain_(g.leaf_count, 0)
+        : g_(g), level_(level), flood_(flood), rows_(rows), rank_(rank), lag_(rank.data(), state, kPruneLag2d),
+          stop_(stop), on_chain_(g.leaf_count, 0)
     {
     }
 
-    // Walks from directed portal pi into `out` (words). False when stopped.
-    bool run(uint32_t pi, uint64_t* out)
+    // The row of region r into `out` (words): the walks of its outgoing portals, which share it.
+    // False when stopped.
+    bool run_region(uint32_t r, uint64_t* out)
     {
-        const Portal2& p = g_.portals[pi];
         out_ = std::span<uint64_t>(out, g_.words);
         std::fill(out_.begin(), out_.end(), 0);
+        bits::set(out_, r);
+        my_rank_ = rank_[r];
+        for (uint32_t k = g_.first_of_leaf[r]; k < g_.first_of_leaf[r + 1]; ++k)
+            if (!run(g_.order[k]))
+                return false;
+        portal_visible += bits::count(out_);
+        return true;
+    }
+
+private:
+    // Walks from directed portal pi into out_. False when stopped.
+    bool run(uint32_t pi)
+    {
+        const Portal2& p = g_.portals[pi];
         head_ = &p;
-        my_rank_ = rank_[pi];
         Frame& head = frame(0);
         std::copy_n(flood_.data() + size_t(pi) * g_.words, g_.words, head.mightsee.data());
         head.lo = 0;
@@ -298,19 +214,25 @@ public:
         return !stopped_;
     }
 
+public:
     // Record chains into probe->found (flow_chain.h), as the 3-D flow does.
     void watch(ChainProbe* probe) { probe_ = probe; }
 
     size_t leaf_recursions = 0;
     uint64_t waited_nanos = 0;
     size_t dominated = 0; // walks not taken: an earlier window held them
+    size_t frames = 0;    // leaves entered
+    size_t portal_visible = 0;
+    size_t clips = 0;     // targets clipped (the geometry tried)
+    size_t target_checks = 0, target_check_prunes = 0;
+    flow2d::SeparatorCounts separator_counts;
 
 private:
     const Graph& g_;
     int level_;
     const std::vector<uint64_t>& flood_;
-    const std::vector<uint64_t>& vis_;
-    const std::vector<uint32_t>& rank_;
+    const std::vector<uint64_t>& rows_; // per region: its row once final
+    const std::vector<uint32_t>& rank_; // per region
     PruneLag lag_; // prune_lag.h: which portals' final vis a walk uses, and the wait for it
     const std::atomic<bool>& stop_;
     std::vector<uint8_t> on_chain_;
@@ -349,13 +271,15 @@ private:
         return frames_[depth];
     }
 
-    // The row a walk ANDs in when it passes portal t: its final vis when t ranks well below
-    // this walk's portal (waiting for it when needed), else its mightsee (also when t's walk was
-    // aborted: a cancelled bake keeps what it has).
+    // The row a walk ANDs in when it passes portal t: the final row of the region t leads into
+    // when that region ranks well below this walk's (waiting for it when needed: every leaf a
+    // line through t reaches is seen from t's region), else t's mightsee (also when that region's
+    // walk was aborted: a cancelled bake keeps what it has).
     const uint64_t* prune_row(uint32_t t)
     {
-        if (lag_.uses_final(t, my_rank_) && lag_.await_final(t, waited_nanos))
-            return vis_.data() + size_t(t) * g_.words;
+        const uint32_t q = g_.portals[t].leaf;
+        if (lag_.uses_final(q, my_rank_) && lag_.await_final(q, waited_nanos))
+            return rows_.data() + size_t(q) * g_.words;
         return flood_.data() + size_t(t) * g_.words;
     }
 
@@ -384,6 +308,7 @@ private:
     void walk(uint32_t leaf, size_t depth)
     {
         bits::set(out_, leaf);
+        ++frames;
         if (watching_ && leaf == probe_->to)
             record_chain(depth);
         if ((++steps_ & 1023) == 0 && stop_.load(std::memory_order_relaxed))
@@ -408,23 +333,26 @@ private:
             const Line back = t.line.flipped();
             if (before.line.n.x == back.n.x && before.line.n.y == back.n.y)
                 continue; // cannot go out through a coplanar face
+            ++clips;
             cur.pass = t.seg;
-            if (!clip_front(cur.pass, head_->line))
+            if (!flow2d::clip_front(cur.pass, head_->line, g_.tol))
                 continue;
             cur.source = before.source;
-            if (!clip_front(cur.source, back))
+            if (!flow2d::clip_front(cur.source, back, g_.tol))
                 continue;
             cur.line = t.line;
             cur.has_pass = true;
+            cur.sep_count = -1;
             if (before.has_pass && !clip_separators(before, cur))
                 continue;
             const uint64_t* row = prune_row(ti);
+            const uint64_t* might = flood_.data() + size_t(ti) * g_.words;
             // The walk's rows shrink fast: AND only the words still holding bits, and keep the
             // span of the result's non-zero words.
             uint64_t more = 0;
             size_t lo = SIZE_MAX, hi = 0;
             for (size_t w = before.lo; w < before.hi; ++w) {
-                const uint64_t m = before.mightsee[w] & row[w];
+                const uint64_t m = before.mightsee[w] & row[w] & might[w];
                 cur.mightsee[w] = m;
                 more |= m & ~out_[w];
                 if (m) {
@@ -438,6 +366,10 @@ private:
                 continue;
             if (dominated_or_remember(ti, cur)) {
                 ++dominated;
+                continue;
+            }
+            if (bits::test(out_, t.leaf) && !may_add_leaf(cur)) {
+                ++target_check_prunes;
                 continue;
             }
             if (watching_) {
@@ -509,11 +441,66 @@ private:
         return false;
     }
 
-    bool clip_separators(const Frame& prev, Frame& cur) const
+    // Target checks (as the 3-D flow's, portal_vis.h): the walk below `cur` can only add the
+    // leaves of its mightsee not yet visible. When there are at most 64, each is checked: a line
+    // from the source through the pass that reaches it crosses a portal into it in front of the
+    // head's and the pass's lines and inside the separators from the source through the pass.
+    // Leaves no such portal survives for are taken out of cur's mightsee; false when none is left.
+    bool may_add_leaf(Frame& cur)
     {
-        if (!clip_to_separators(cur.source, prev.pass, cur.pass, false))
+        ++target_checks;
+        uint32_t unseen = 0;
+        for (size_t w = cur.lo; w < cur.hi && unseen <= kTargetCheckLeaves; ++w)
+            unseen += bits::popcount(cur.mightsee[w] & ~out_[w]);
+        if (unseen > kTargetCheckLeaves)
+            return true;
+        bool any = false;
+        for (size_t w = cur.lo; w < cur.hi; ++w)
+            for (uint64_t m = cur.mightsee[w] & ~out_[w]; m != 0; m &= m - 1) {
+                const uint32_t leaf = uint32_t(w * 64 + size_t(std::countr_zero(m)));
+                if (leaf_reachable(leaf, cur))
+                    any = true;
+                else
+                    cur.mightsee[w] &= ~(uint64_t{1} << std::countr_zero(m));
+            }
+        return any;
+    }
+
+    bool leaf_reachable(uint32_t leaf, Frame& cur)
+    {
+        for (uint32_t k = g_.first_of_leaf[leaf]; k < g_.first_of_leaf[leaf + 1]; ++k) {
+            Segment into = g_.portals[g_.order[k] ^ 1u].seg; // the portal's twin leads into `leaf`
+            if (flow2d::clip_front(into, head_->line, g_.tol) && flow2d::clip_front(into, cur.line, g_.tol) &&
+                flow2d::clip_by_separators(into, cur.seps, separators_of(cur), g_.tol, separator_counts))
+                return true;
+        }
+        return false;
+    }
+
+    // The separators from f's source through its pass (test 0), found once per frame.
+    int separators_of(Frame& f)
+    {
+        if (f.sep_count < 0)
+            f.sep_count = flow2d::find_separators(f.source, f.pass, false, g_.tol, separator_counts, f.seps);
+        return f.sep_count;
+    }
+
+    static bool same(const Segment& a, const Segment& b)
+    {
+        return a.p[0].x == b.p[0].x && a.p[0].y == b.p[0].y && a.p[1].x == b.p[1].x && a.p[1].y == b.p[1].y;
+    }
+
+    bool clip_separators(Frame& prev, Frame& cur)
+    {
+        // Test 0 from the source the target left whole is the previous frame's: reuse its lines.
+        const bool test0 = same(cur.source, prev.source)
+                               ? flow2d::clip_by_separators(cur.pass, prev.seps, separators_of(prev), g_.tol,
+                                                            separator_counts)
+                               : flow2d::clip_to_separators(cur.source, prev.pass, cur.pass, false, g_.tol,
+                                                            separator_counts);
+        if (!test0)
             return false;
-        if (level_ > 1 && !clip_to_separators(cur.pass, prev.pass, cur.source, false))
+        if (level_ > 1 && !flow2d::clip_to_separators(cur.pass, prev.pass, cur.source, false, g_.tol, separator_counts))
             return false;
         return true;
     }
@@ -551,61 +538,92 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
     rep.base_seconds = since(start);
     const bool base_finished = ok;
 
-    std::vector<uint64_t> vis = flood; // unfinished portals keep their mightsee
-    std::vector<uint8_t> finished_walk(n, 0);
+    // Rows per region; a region whose walk did not finish keeps the union of its portals' mightsee.
+    std::vector<uint64_t> rows(size_t(region_count) * g.words, 0);
+    if (ok)
+        for (uint32_t r = 0; r < region_count; ++r) {
+            uint64_t* row = rows.data() + size_t(r) * g.words;
+            for (uint32_t k = g.first_of_leaf[r]; k < g.first_of_leaf[r + 1]; ++k) {
+                const uint64_t* src = flood.data() + size_t(g.order[k]) * g.words;
+                for (size_t w = 0; w < g.words; ++w)
+                    row[w] |= src[w];
+            }
+            bits::set(std::span<uint64_t>(row, g.words), r);
+        }
     if (ok && full) {
-        std::vector<uint32_t> by_rank(n);
+        // Regions by increasing mightsee (ties by index), handed out in that order.
+        std::vector<uint32_t> by_rank(region_count);
         std::iota(by_rank.begin(), by_rank.end(), 0u);
-        std::vector<size_t> counts(n);
-        for (uint32_t i = 0; i < n; ++i)
-            counts[i] = bits::count(std::span<const uint64_t>(flood.data() + size_t(i) * g.words, g.words));
+        std::vector<size_t> counts(region_count);
+        for (uint32_t r = 0; r < region_count; ++r)
+            counts[r] = bits::count(std::span<const uint64_t>(rows.data() + size_t(r) * g.words, g.words));
         std::stable_sort(by_rank.begin(), by_rank.end(), [&](uint32_t a, uint32_t b) { return counts[a] < counts[b]; });
-        std::vector<uint32_t> rank(n);
-        for (uint32_t r = 0; r < n; ++r)
+        std::vector<uint32_t> rank(region_count);
+        for (uint32_t r = 0; r < region_count; ++r)
             rank[by_rank[r]] = r;
-        std::unique_ptr<std::atomic<uint8_t>[]> state(new std::atomic<uint8_t>[n]);
-        for (uint32_t i = 0; i < n; ++i)
+        std::unique_ptr<std::atomic<uint8_t>[]> state(new std::atomic<uint8_t>[region_count]);
+        for (uint32_t i = 0; i < region_count; ++i)
             state[i].store(portal_vis::kNone, std::memory_order_relaxed);
         finished.store(0);
-        std::atomic<size_t> recursions{0};
+        std::atomic<size_t> recursions{0}, frames{0}, portal_visible{0}, clips{0}, dominated{0};
+        std::atomic<size_t> separator_candidates{0}, separators{0}, checks{0}, prunes{0};
         std::atomic<uint64_t> waited_nanos{0};
         const auto flow_progress = params.progress ? std::function<bool(double)>([&](double f) {
             return params.progress(base_share + f * (1.0 - base_share));
         })
                                                    : std::function<bool(double)>();
+        const auto region_fraction = [&] { return double(finished.load()) / std::max<uint32_t>(region_count, 1); };
         struct Scratch {
             std::unique_ptr<Walker> walker;
             std::vector<uint64_t> row;
         };
         ok = parallel_items(
-            n, rep.threads, flow_progress, fraction, stop,
+            region_count, thread_count(params.threads, region_count), flow_progress, region_fraction, stop,
             [&] {
                 Scratch s;
-                s.walker = std::make_unique<Walker>(g, std::clamp(params.level, 0, 3), flood, vis, rank, state.get(), stop);
+                s.walker = std::make_unique<Walker>(g, std::clamp(params.level, 0, 3), flood, rows, rank, state.get(), stop);
                 s.walker->watch(params.probe);
                 s.row.assign(g.words, 0);
                 return s;
             },
             [&](size_t item, Scratch& s) {
-                const uint32_t pi = by_rank[item];
-                FlowTicket ticket(state[pi]); // Aborted unless done(): a walk waiting on pi goes on
-                const size_t before_recursions = s.walker->leaf_recursions;
-                const uint64_t before_wait = s.walker->waited_nanos;
-                if (s.walker->run(pi, s.row.data())) {
-                    std::copy(s.row.begin(), s.row.end(), vis.begin() + ptrdiff_t(size_t(pi) * g.words));
-                    finished_walk[pi] = 1;
+                const uint32_t r = by_rank[item];
+                FlowTicket ticket(state[r]); // Aborted unless done(): a walk waiting on r goes on
+                Walker& w = *s.walker;
+                const size_t before[] = {w.leaf_recursions, w.frames, w.portal_visible, w.clips, w.dominated,
+                                         size_t(w.separator_counts.candidates), size_t(w.separator_counts.clips),
+                                         w.target_checks, w.target_check_prunes};
+                const uint64_t before_wait = w.waited_nanos;
+                if (w.run_region(r, s.row.data())) {
+                    std::copy(s.row.begin(), s.row.end(), rows.begin() + ptrdiff_t(size_t(r) * g.words));
                     ticket.done();
                 }
-                recursions.fetch_add(s.walker->leaf_recursions - before_recursions);
-                waited_nanos.fetch_add(s.walker->waited_nanos - before_wait, std::memory_order_relaxed);
+                recursions.fetch_add(w.leaf_recursions - before[0]);
+                frames.fetch_add(w.frames - before[1]);
+                portal_visible.fetch_add(w.portal_visible - before[2]);
+                clips.fetch_add(w.clips - before[3]);
+                dominated.fetch_add(w.dominated - before[4]);
+                separator_candidates.fetch_add(size_t(w.separator_counts.candidates) - before[5]);
+                separators.fetch_add(size_t(w.separator_counts.clips) - before[6]);
+                checks.fetch_add(w.target_checks - before[7]);
+                prunes.fetch_add(w.target_check_prunes - before[8]);
+                waited_nanos.fetch_add(w.waited_nanos - before_wait, std::memory_order_relaxed);
                 finished.fetch_add(1, std::memory_order_relaxed);
             });
         rep.leaf_recursions = recursions.load();
+        rep.frames = frames.load();
+        rep.portal_visible = portal_visible.load();
+        rep.clips = clips.load();
+        rep.dominated_windows = dominated.load();
+        rep.separator_candidates = separator_candidates.load();
+        rep.separators = separators.load();
+        rep.target_checks = checks.load();
+        rep.target_check_prunes = prunes.load();
         rep.wait_seconds = double(waited_nanos.load()) * 1e-9;
     }
     rep.cancelled = !ok;
 
-    // A region sees the union of its outgoing portals' vis, and itself.
+    // A region sees what its walks reached, and itself.
     size_t total = 0;
     Pvs pvs = Pvs::build(region_count, [&](uint32_t r, std::span<uint64_t> row) {
         if (!base_finished) { // no mightsee yet: everything, the only safe answer
@@ -613,20 +631,12 @@ Pvs bake_portal_vis_2d(const PortalSet& input, uint32_t region_count, const VisP
             total += region_count;
             return true;
         }
-        std::fill(row.begin(), row.end(), 0);
-        for (uint32_t k = g.first_of_leaf[r]; k < g.first_of_leaf[r + 1]; ++k) {
-            const uint64_t* src = vis.data() + size_t(g.order[k]) * g.words;
-            if (bits::test(std::span<const uint64_t>(src, g.words), r))
-                ++rep.saw_into_own_region;
-            for (size_t w = 0; w < g.words; ++w)
-                row[w] |= src[w];
-        }
-        bits::set(row, r);
+        std::copy_n(rows.data() + size_t(r) * g.words, g.words, row.begin());
         total += bits::count(row);
         return true;
     });
     rep.mean_visible = region_count ? double(total) / region_count : 0.0;
-    rep.peak_bytes_estimate = (flood.size() + vis.size()) * sizeof(uint64_t) + g.portals.size() * sizeof(Portal2);
+    rep.peak_bytes_estimate = (flood.size() + rows.size()) * sizeof(uint64_t) + g.portals.size() * sizeof(Portal2);
     rep.seconds = since(start);
     if (params.progress && !rep.cancelled)
         params.progress(1.0);

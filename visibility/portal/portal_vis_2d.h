@@ -10,60 +10,55 @@
 // Each portal gives two directed portals, 2i in regions[0] leading into regions[1], 2i+1 the
 // other way, the line's normal pointing into the region led to.
 //
-// Conservative. The flow's tolerances are set so that it keeps every sight line wider than
-// 2e-6 units (portal_vis_2d.cpp: kOnLine = 1e-6, kSlack = 1e-3, kMinSeparator = 0.1): a segment
-// is in front of a line when a point of it is more than kOnLine in front (lines through a
-// segment with none further in front form a window under 2 kOnLine wide: nothing for the
-// collinear portals along Doom's split lines), a clip keeps the part up to kSlack behind its
-// line, a separator is used only when the source is surely behind it and the pass surely in
-// front (else it is skipped, which clips less), and a portal with any width is kept. glVIS's
-// ON_EPSILON (0.1) instead dropped a target with no point more than 0.1 in front of a
-// separator, which loses sight lines up to 0.1 wide (two directed pairs of Freedoom 2 MAP10
-// that the reference proves with its 0.05 beam). The rows cost a few bits more than glVIS's
-// (docs/doom.md).
+// Conservative. Clips keep every point exact arithmetic would keep, with a slack bounded by the
+// round-off of the map's coordinates (segment_clip_2d.h: 3e-8 at Doom's largest); the one loss is
+// a sight line narrower than 2e-6 (a segment with no point more than 1e-6 in front of a line is
+// dropped; collinear portals along Doom's split lines are not walked along). glVIS's ON_EPSILON
+// (0.1) lost sight lines up to 0.1 wide (two directed pairs of Freedoom 2 MAP10 that the reference
+// proves with its 0.05 beam).
 //
 // Method::Fast (glVIS -fast): base vis. Portal p might see t when t has an endpoint in front of
 // p's line and p has one behind t's line; mightsee is the flood from p's destination through
-// such t.
-// Method::Full: glVIS's flow in 2-D, with the tolerances above and its rules. The walk
-// from directed portal p carries the source segment and the pass segment; a target t leaving
-// the current leaf is clipped to the front of p's line, the source to the back of t's line
-// (the back of the target), then the target by the separators source -> pass (level >= 0, and
-// mirrored pass -> source at level >= 1), the source by pass -> target (level >= 2, mirrored
-// at level >= 3). In 2-D a separator is a line through an endpoint of one segment and an
-// endpoint of the other with the two other endpoints strictly on opposite sides: a sight line
-// from the first segment through the second stays on the second's side of it. Such a line is
-// the same whichever segment is called the source and keeps the same side, so in the plane
-// tests 1 and 3 add nothing to tests 0 and 2 (levels 1 and 3 equal 0 and 2; 4 is taken as 3).
-// Clips keep points up to kSlack behind, return a segment with no point further behind
-// unchanged, and drop one with no point more than kOnLine in front. A walk never re-enters a leaf on its own chain, and
-// stops where its mightsee (the AND of the mightsee or final vis of every portal passed) adds
-// nothing not yet visible to a leaf already visible, as vis does. Unlike glVIS there is no
-// depth cap (its cap of 256 can cut a sight line).
+// such t. A region's row is the union of its portals' mightsee.
+// Method::Full: glVIS's flow in 2-D, with the tolerances above and its rules, walked per region:
+// the walks of a region's outgoing portals share the region's row, so a walk stops where a
+// sibling already saw what it could add. The walk from directed portal p carries the source
+// segment and the pass segment; a target t leaving the current leaf is clipped to the front of
+// p's line, the source to the back of t's line, then the target by the separators source -> pass
+// (level >= 0), the source by pass -> target (level >= 2). In 2-D a separator is a line through an
+// endpoint of one segment and an endpoint of the other with the two other endpoints on opposite
+// sides: such a line is the same whichever segment is called the source, so glVIS's tests 1 and 3
+// add nothing to tests 0 and 2 (levels 1 and 3 equal 0 and 2; 4 is taken as 3). The separators
+// of a frame's source and pass are found once and reused by every target whose clip leaves the
+// source whole. A walk never re-enters a leaf on its own chain, and stops where its mightsee (the
+// AND of the mightsee of every portal passed, and of the final row of the region each leads into
+// once that row is final) adds nothing not yet in the row. Unlike glVIS there is no depth cap (its
+// cap of 256 can cut a sight line).
 //
-// Dominated windows (beyond glVIS). The state a walk carries past portal t is the source
-// interval (on p's segment), the pass interval (on t's segment) and the mightsee; the clips
-// only ever shrink all three, so a walk arriving at t with intervals inside those of an earlier
-// walk of the same source past t, and a mightsee inside its mightsee, can reach nothing the
-// earlier one did not: it is skipped. Up to 8 windows are remembered per portal and walk. On
-// Doom maps, whose tiny subsectors reach one portal by thousands of chains, this removes most
-// of the work (MAP10: 873 000 steps to 123 000 for its slowest portal). In the plane the two
-// separators bound exactly the lines from the source through the pass, so the clips are
-// monotone (a smaller source and pass give a smaller window) and the skip loses nothing, except
-// where a separator was skipped as unsure (geometry degenerate to within kSlack); the intervals
-// must lie inside the earlier ones with no tolerance (tests/wld/test_doom_vis.cpp checks the
-// reference on real maps).
+// Target checks (as the 3-D flow's, portal_vis.h): on entering a leaf the row already holds, when
+// at most 64 leaves of the mightsee are still unseen, each is checked - a line from the source
+// through the pass that reaches it crosses a portal into it in front of the head's and the pass's
+// lines and inside the frame's separators - and the walk goes on only if one passes.
 //
-// Determinism, threads, progress, cancellation: as bake_portal_vis. The directed portals are
-// ranked by increasing mightsee count (ties by index) and handed to the threads in rank order;
-// a walk prunes with the final vis of portals ranked more than 8 below its own (waiting for one
-// still being walked) and with the mightsee of the others - the rule of portal/prune_lag.h, which
-// the 3-D flow shares with a lag of 32 - so the result is a fixed function of the input and the
-// level, whatever the thread count. Cancelling returns
-// the finished portals' vis and the unfinished ones' mightsee (conservative).
+// Dominated windows (beyond glVIS). The state a walk carries past portal t is the source interval
+// (on p's segment), the pass interval (on t's segment) and the mightsee; the clips only shrink all
+// three, so a walk arriving at t with intervals inside those of an earlier walk of the same source
+// past t, and a mightsee inside its mightsee, can reach nothing the earlier one did not: it is
+// skipped. Up to 8 windows are remembered per portal and walk. In the plane the two separators
+// bound exactly the lines from the source through the pass, so the clips are monotone; the
+// intervals must lie inside the earlier ones with no tolerance.
 //
-// Memory: two rows of region_count bits per directed portal and, per thread, one row per walk
-// depth reached.
+// Determinism, threads, progress, cancellation: as bake_portal_vis, with regions in place of
+// directed portals. Regions are ranked by increasing mightsee (ties by index) and handed to the
+// threads in rank order; a walk prunes with the final row of regions ranked more than 8 below its
+// own (waiting for one still being walked) and with the mightsee otherwise - the rule of
+// portal/prune_lag.h - so the result is a fixed function of the input and the level, whatever the
+// thread count, and so are the work counters (VisReport::frames, clips, separators, separator
+// candidates, target checks, dominated windows). Cancelling returns the finished regions' rows and
+// the union of the others' portals' mightsee (conservative).
+//
+// Memory: a row of region_count bits per directed portal (its mightsee) and per region, and, per
+// thread, one row per walk depth reached.
 #pragma once
 
 #include "visibility/portal/portal_vis.h"
