@@ -5,10 +5,13 @@
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
+#include "report/pvs_diff_json.h"
+#include "report/report_fields_json.h"
 #include "visibility/bit_row.h"
 #include "visibility/eval/pvs_gap.h"
 #include "visibility/file_error.h"
 #include "visibility/methods/vis_method.h"
+#include "visibility/methods/vis_report_fields.h"
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
@@ -267,36 +270,6 @@ quake::PrtFile load_prt_for_zone(const std::string& prt_path, const Input& in, c
     return prt;
 }
 
-// Row-by-row comparison of the bake with the PVS the file had (missing rows: all visible).
-nlohmann::json compare_with_file(const Pvs& baked, const Pvs& file)
-{
-    std::vector<uint64_t> ours(baked.words_per_row()), theirs(file.words_per_row());
-    size_t only_ours = 0, only_file = 0, ours_total = 0, file_total = 0, rows_differing = 0, not_within_file = 0;
-    for (uint32_t r = 0; r < baked.region_count(); ++r) {
-        baked.decode_row(r, ours);
-        file.decode_row(r, theirs);
-        size_t row_only_ours = 0, row_only_file = 0;
-        for (size_t w = 0; w < ours.size(); ++w) {
-            row_only_ours += size_t(std::popcount(ours[w] & ~theirs[w]));
-            row_only_file += size_t(std::popcount(theirs[w] & ~ours[w]));
-        }
-        only_ours += row_only_ours;
-        only_file += row_only_file;
-        rows_differing += (row_only_ours + row_only_file) > 0 ? 1 : 0;
-        not_within_file += row_only_ours > 0 ? 1 : 0;
-        ours_total += bits::count(ours);
-        file_total += bits::count(theirs);
-    }
-    const double rows = std::max<double>(baked.region_count(), 1.0);
-    return {{"mean_visible_file", double(file_total) / rows},
-            {"mean_visible_baked", double(ours_total) / rows},
-            {"bits_only_baked", only_ours},
-            {"bits_only_file", only_file},
-            {"rows_differing", rows_differing},
-            {"rows_with_bits_only_baked", not_within_file},
-            {"file_missing_rows", file.missing_row_count()}};
-}
-
 struct BakeRun {
     PortalSet portals;
     std::string portal_source = "tree";
@@ -417,6 +390,7 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                         {"flow_frames", r.frames},
                         {"flow_frames_floor", r.portal_visible},
                         {"edits_applied", run.edits_applied}};
+    report::add_report_fields(j, vis_report_fields(r, o.method == "portal-full", false));
     if (run.portal_stats)
         j["leaks"] = {{"leaves_touching_world", run.portal_stats->leaves_touching_world.size()},
                       {"leaves_touching_outside", run.portal_stats->leaves_touching_outside.size()}};
@@ -426,7 +400,7 @@ nlohmann::json report_json(const BakeOptions& o, const Input& in, const BakeRun&
                                                   {"cluster_mean_visible", run.cluster_report.cluster_mean_visible},
                                                   {"expand_seconds", run.cluster_report.expand_seconds}}
                                  : nlohmann::json(nullptr);
-    j["file_pvs"] = in.zone.baked_pvs ? compare_with_file(run.pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
+    j["file_pvs"] = in.zone.baked_pvs ? report::pvs_diff_json(run.pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
     return j;
 }
 
@@ -589,7 +563,8 @@ int run_registry_method(const BakeOptions& o, const Input& in, double load_secon
                             {"peak_rss_bytes", peak_rss_bytes()},
                             {"mean_visible", mean_visible_of(pvs)},
                             {"edits_applied", edits}};
-        j["file_pvs"] = in.zone.baked_pvs ? compare_with_file(pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
+        report::add_report_fields(j, run.fields);
+        j["file_pvs"] = in.zone.baked_pvs ? report::pvs_diff_json(pvs, *in.zone.baked_pvs) : nlohmann::json(nullptr);
         write_report(o.report, j);
     }
     return 0;

@@ -6,13 +6,17 @@
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"
+#include "report/pvs_diff_json.h"
+#include "report/report_fields_json.h"
 #include "visibility/file_error.h"
+#include "visibility/methods/vis_report_fields.h"
 #include "wld/common/read_file.h"
 #include "wld/quake/ambient_sounds.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp_layout.h"
 #include "wld/quake/prt_file.h"
 #include "wld/quake2/ibsp38_file.h"
+#include "wld/quake2/ibsp38_zone.h"
 #include "wld/quake2/quake2_vis.h"
 #include "wld/zone_file.h"
 
@@ -119,11 +123,12 @@ void write_in_place(const std::string& map, const std::vector<uint8_t>& bytes)
 }
 
 // --report for a Quake 2 map: what was written and the flow's figures (nulls with --phs-only).
-nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map, const quake2::Quake2VisResult& r)
+nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> before,
+                             const quake2::Quake2VisResult& r)
 {
     const VisReport& v = r.report;
     const auto baked = [&](auto value) { return o.phs_only ? nlohmann::json(nullptr) : nlohmann::json(value); };
-    return {{"input", map},
+    nlohmann::json j = {{"input", map},
             {"output", map},
             {"format", "Quake 2 (IBSP 38)"},
             {"method", o.phs_only ? "phs-only" : (o.fast ? "portal-fast" : o.method)},
@@ -139,6 +144,16 @@ nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map,
             {"time_seconds", baked(v.seconds)},
             {"base_seconds", baked(v.base_seconds)},
             {"peak_rss_bytes", peak_rss_bytes()}};
+    if (!o.phs_only)
+        for (const ReportField& f : vis_report_fields(v, !(o.fast || o.method == "portal-fast"), false))
+            if (f.name.starts_with(kWorkPrefix))
+                report::add_report_fields(j, {f});
+    // The PVS the map held before against the one written.
+    const Zone old_zone = quake2::load_ibsp38(before, map), new_zone = quake2::load_ibsp38(r.map, map);
+    j["regions"] = new_zone.region_count();
+    j["file_pvs"] = old_zone.baked_pvs && new_zone.baked_pvs ? report::pvs_diff_json(*new_zone.baked_pvs, *old_zone.baked_pvs)
+                                                             : nlohmann::json(nullptr);
+    return j;
 }
 
 int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
@@ -186,7 +201,7 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
                  q.phs == quake2::PhsRule::Quake2 ? "Quake 2's" : "ericw-tools'",
                  o.phs_only ? "" : (", " + std::to_string(r.report.seconds) + " s").c_str());
     if (!o.report.empty())
-        write_report(o.report, quake2_report(o, map, r));
+        write_report(o.report, quake2_report(o, map, bytes, r));
     return 0;
 }
 

@@ -25,19 +25,28 @@ struct ContextDeleter {
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 
-// Draws the chart on a white page; the context is finished (every drawing error surfaces in its
-// status) on return.
-void draw_page(cairo_surface_t* surface, std::span<const ChartPoint> points, const std::string& title, uint32_t width,
-               uint32_t height, const std::string& what)
+using Draw = std::function<void(Canvas& canvas, glm::vec2 size)>;
+
+// Draws on a white page; the context is finished (every drawing error surfaces in its status)
+// on return.
+void draw_page(cairo_surface_t* surface, const Draw& draw, uint32_t width, uint32_t height, const std::string& what)
 {
     ContextPtr context(cairo().create(surface));
     cairo().set_source_rgb(context.get(), 1, 1, 1);
     cairo().paint(context.get());
     CairoCanvas canvas(context.get());
-    draw_speed_accuracy_chart(points, title, canvas, {0, 0}, {float(width), float(height)});
+    draw(canvas, {float(width), float(height)});
     if (const cairo_status_t status = cairo().status(context.get()); status != CAIRO_STATUS_SUCCESS)
         throw std::runtime_error(what + ": drawing the chart failed: " + cairo().status_to_string(status));
 }
+
+Draw speed_accuracy(std::span<const ChartPoint> points, const std::string& title)
+{
+    return [points, title](Canvas& canvas, glm::vec2 size) {
+        draw_speed_accuracy_chart(points, title, canvas, {0, 0}, size);
+    };
+}
+
 
 void check_surface(cairo_surface_t* surface, const std::string& path)
 {
@@ -53,28 +62,12 @@ void check_size(uint32_t width, uint32_t height)
                                     " is outside 1..16384 pixels a side");
 }
 
-} // namespace
-
-ChartFormat chart_format_for(const std::string& path)
-{
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    if (extension == ".png")
-        return ChartFormat::Png;
-    if (extension == ".svg")
-        return ChartFormat::Svg;
-    if (extension == ".pdf")
-        return ChartFormat::Pdf;
-    throw std::invalid_argument(path + ": a chart is written as .png, .svg or .pdf (chosen by the extension)");
-}
-
-Image render_chart_image(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height)
+Image render_image(const Draw& draw, uint32_t width, uint32_t height)
 {
     check_size(width, height);
     SurfacePtr surface(cairo().image_surface_create(CAIRO_FORMAT_RGB24, int(width), int(height)));
     check_surface(surface.get(), "chart image");
-    draw_page(surface.get(), points, title, width, height, "chart image");
+    draw_page(surface.get(), draw, width, height, "chart image");
     cairo().surface_flush(surface.get());
     Image image;
     image.width = width;
@@ -96,13 +89,39 @@ Image render_chart_image(std::span<const ChartPoint> points, const std::string& 
     return image;
 }
 
+} // namespace
+
+ChartFormat chart_format_for(const std::string& path)
+{
+    std::string extension = std::filesystem::path(path).extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (extension == ".png")
+        return ChartFormat::Png;
+    if (extension == ".svg")
+        return ChartFormat::Svg;
+    if (extension == ".pdf")
+        return ChartFormat::Pdf;
+    throw std::invalid_argument(path + ": a chart is written as .png, .svg or .pdf (chosen by the extension)");
+}
+
+Image render_chart_image(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height)
+{
+    return render_image(speed_accuracy(points, title), width, height);
+}
+
 void write_chart_file(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height,
                       const std::string& path)
+{
+    write_canvas_file(width, height, path, speed_accuracy(points, title));
+}
+
+void write_canvas_file(uint32_t width, uint32_t height, const std::string& path, const Draw& draw)
 {
     const ChartFormat format = chart_format_for(path);
     switch (format) {
     case ChartFormat::Png:
-        save_png(render_chart_image(points, title, width, height), path);
+        save_png(render_image(draw, width, height), path);
         return;
     case ChartFormat::Svg:
     case ChartFormat::Pdf: {
@@ -110,7 +129,7 @@ void write_chart_file(std::span<const ChartPoint> points, const std::string& tit
         SurfacePtr surface(format == ChartFormat::Svg ? cairo().svg_surface_create(path.c_str(), width, height)
                                                       : cairo().pdf_surface_create(path.c_str(), width, height));
         check_surface(surface.get(), path);
-        draw_page(surface.get(), points, title, width, height, path);
+        draw_page(surface.get(), draw, width, height, path);
         cairo().surface_finish(surface.get()); // writes and closes the file: errors show up here
         check_surface(surface.get(), path);
         return;

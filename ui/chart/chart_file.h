@@ -3,9 +3,11 @@
 // face's glyphs), chosen by the path's extension. One layout, the same as the inspector's panel.
 #pragma once
 
+#include "ui/chart/canvas.h"
 #include "ui/chart/speed_accuracy_chart.h"
 #include "ui/software_renderer.h"
 
+#include <functional>
 #include <string>
 
 namespace pvs::ui::chart {
@@ -18,6 +20,11 @@ ChartFormat chart_format_for(const std::string& path);
 
 // The chart on a white background, width x height pixels.
 Image render_chart_image(std::span<const ChartPoint> points, const std::string& title, uint32_t width, uint32_t height);
+
+// Any drawing on a white page of width x height pixels, written in the format of `path`'s
+// extension; throws as write_chart_file.
+void write_canvas_file(uint32_t width, uint32_t height, const std::string& path,
+                       const std::function<void(Canvas& canvas, glm::vec2 size)>& draw);
 
 // Writes the chart in the format of `path`'s extension; throws std::runtime_error naming the path
 // when it cannot be written (std::invalid_argument for an unknown extension).

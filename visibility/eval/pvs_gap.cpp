@@ -26,13 +26,16 @@ PvsGap pvs_gap(const Pvs* pvs, const Pvs& reference)
         if (pvs)
             pvs->decode_row(r, ours);
         reference.decode_row(r, theirs);
-        uint64_t row_missing = 0;
+        uint64_t row_missing = 0, row_excess = 0;
         for (size_t w = 0; w < words; ++w) {
             gap.bits += uint64_t(std::popcount(ours[w]));
             gap.reference_bits += uint64_t(std::popcount(theirs[w]));
             row_missing += uint64_t(std::popcount(theirs[w] & ~ours[w]));
-            gap.excess_bits += uint64_t(std::popcount(ours[w] & ~theirs[w]));
+            row_excess += uint64_t(std::popcount(ours[w] & ~theirs[w]));
         }
+        gap.excess_bits += row_excess;
+        gap.rows_excess_bits += row_excess ? 1 : 0;
+        gap.rows_differing += row_missing || row_excess ? 1 : 0;
         for (size_t w = 0; w < words && row_missing && gap.missing_pairs.size() < kListedMissingPairs; ++w)
             for (uint64_t m = theirs[w] & ~ours[w]; m && gap.missing_pairs.size() < kListedMissingPairs; m &= m - 1)
                 gap.missing_pairs.emplace_back(r, uint32_t(w * 64 + size_t(std::countr_zero(m))));

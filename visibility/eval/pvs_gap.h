@@ -23,6 +23,8 @@ struct PvsGap {
     uint64_t missing_bits = 0;
     uint64_t excess_bits = 0;
     uint32_t rows_missing_bits = 0; // rows with at least one missing bit
+    uint32_t rows_excess_bits = 0;  // rows with at least one excess bit
+    uint32_t rows_differing = 0;    // rows with either
     double mean_visible = 0.0;      // bits / rows
     // The first kListedMissingPairs missing pairs (row, region), in row order: what a user opens
     // to see why (compare's JSON, the inspector's Compare panel).

@@ -1,6 +1,7 @@
 #include "visibility/methods/vis_method.h"
 
 #include "visibility/bsp_tree_edit.h"
+#include "visibility/methods/vis_report_fields.h"
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
@@ -106,11 +107,17 @@ MethodRun run_portal(const Zone& zone, const MethodSettings& s, VisParams::Metho
 {
     const auto start = std::chrono::steady_clock::now();
     VisReport report;
+    const PortalSet portals = zone_portals(zone, s);
+    const double portal_seconds = seconds_since(start);
     Pvs pvs = uses_2d_vis(zone, s.heights)
-                  ? bake_portal_vis_2d(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report)
-                  : bake_portal_vis(zone_portals(zone, s), uint32_t(zone.region_count()), vis_params(s, method), &report);
-    return run_from_report(std::move(pvs), report, seconds_since(start),
-                           uses_2d_vis(zone, s.heights) ? std::string(name) + " (2-D)" : std::string(name));
+                  ? bake_portal_vis_2d(portals, uint32_t(zone.region_count()), vis_params(s, method), &report)
+                  : bake_portal_vis(portals, uint32_t(zone.region_count()), vis_params(s, method), &report);
+    const bool flow_2d = uses_2d_vis(zone, s.heights);
+    MethodRun run = run_from_report(std::move(pvs), report, seconds_since(start),
+                                    flow_2d ? std::string(name) + " (2-D)" : std::string(name));
+    run.fields = vis_report_fields(report, method == VisParams::Method::Full, flow_2d);
+    run.fields.push_back({"portalize_seconds", portal_seconds});
+    return run;
 }
 
 MethodRun run_portal_fast(const Zone& zone, const MethodSettings& s)
@@ -136,6 +143,7 @@ MethodRun run_clustered(const Zone& zone, const MethodSettings& s)
     Pvs pvs = bake_clustered_portal_vis(portals, clusters.cluster_of_region, clusters.cluster_count,
                                         vis_params(s, VisParams::Method::Full), &report, &cluster_report);
     MethodRun run = run_from_report(std::move(pvs), report, seconds_since(start), "clustered");
+    run.fields = vis_report_fields(report, true, false);
     run.summary += format(" (%u %s clusters)", clusters.cluster_count, boxes ? "box" : "subtree");
     return run;
 }

@@ -28,6 +28,7 @@
 #include "visibility/pvs.h"
 #include "visibility/raster/raster_vis.h"
 #include "visibility/reference/reference_vis.h"
+#include "visibility/methods/report_field.h"
 #include "visibility/zone.h"
 
 #include <cstdint>
@@ -36,6 +37,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pvs {
 
@@ -79,6 +81,10 @@ struct MethodRun {
     size_t peak_bytes_estimate = 0; // the baker's own estimate of its largest heap use
     bool cancelled = false;
     std::string summary;            // one line for a user: what ran and what it found
+    // What the method measured, for reports (report_field.h): times, counts and, under "work.",
+    // its work counters - deterministic for a zone, a method and its settings, on any machine and
+    // at any thread count, so a rise is a regression that no clock noise hides.
+    std::vector<ReportField> fields;
 };
 
 struct VisMethod {
