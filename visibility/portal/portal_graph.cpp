@@ -4,6 +4,7 @@
 #include "visibility/bit_row.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace pvs::portal_vis {
@@ -103,6 +104,30 @@ Graph build_graph(const PortalSet& set, uint32_t region_count)
     g.leaf_portal_dest.resize(g.leaf_portals.size());
     for (size_t k = 0; k < g.leaf_portals.size(); ++k)
         g.leaf_portal_dest[k] = g.portals[g.leaf_portals[k]].leaf;
+    // Each region's sphere: about the centre of its portals' points' box, out to the farthest.
+    g.leaf_centre.assign(region_count, Vec(0.0));
+    g.leaf_radius.assign(region_count, 0.0);
+    for (uint32_t r = 0; r < region_count; ++r) {
+        Vec lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+        for (uint32_t k = g.leaf_first[r]; k < g.leaf_first[r + 1]; ++k) {
+            const DirectedPortal& p = g.portals[g.leaf_portals[k]];
+            for (uint32_t i = 0; i < p.point_count; ++i) {
+                lo = glm::min(lo, g.points[p.first_point + i]);
+                hi = glm::max(hi, g.points[p.first_point + i]);
+            }
+        }
+        if (g.leaf_first[r] == g.leaf_first[r + 1])
+            continue;
+        const Vec centre = (lo + hi) * 0.5;
+        double radius = 0.0;
+        for (uint32_t k = g.leaf_first[r]; k < g.leaf_first[r + 1]; ++k) {
+            const DirectedPortal& p = g.portals[g.leaf_portals[k]];
+            for (uint32_t i = 0; i < p.point_count; ++i)
+                radius = std::max(radius, glm::length(g.points[p.first_point + i] - centre));
+        }
+        g.leaf_centre[r] = centre;
+        g.leaf_radius[r] = radius * (1.0 + 1e-12) + 1e-9; // round-off: never too small
+    }
     return g;
 }
 

@@ -64,6 +64,10 @@ struct Graph {
     // Per entry of leaf_portals, the region that portal leads into: a flood skips most portals
     // by it (their region is reached already) without loading the portal itself.
     std::vector<uint32_t> leaf_portal_dest;
+    // Per region: a sphere holding every point of its portals (target checks reject a region
+    // whose whole sphere lies behind a plane without clipping its portals one by one).
+    std::vector<Vec> leaf_centre;
+    std::vector<double> leaf_radius;
     // Per pair of directed portals (2i, 2i + 1): the index of the input portal they come from.
     std::vector<uint32_t> input_portal;
     uint32_t max_points = 0;
@@ -74,7 +78,8 @@ struct Graph {
     {
         return portals.capacity() * sizeof(DirectedPortal) + points.capacity() * sizeof(Vec) +
                (leaf_first.capacity() + leaf_portals.capacity() + leaf_portal_dest.capacity() + input_portal.capacity()) *
-                   sizeof(uint32_t);
+                   sizeof(uint32_t) +
+               leaf_centre.capacity() * sizeof(Vec) + leaf_radius.capacity() * sizeof(double);
     }
 };
 

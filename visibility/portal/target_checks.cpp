@@ -50,6 +50,16 @@ bool FlowWorker::may_add_leaf(const Frame& head)
 
 bool FlowWorker::leaf_reachable(uint32_t leaf, Frame& f, const Frame& prev, const Frame& head)
 {
+    // The whole region more than ON_EPSILON behind a plane its portals are clipped by: every
+    // point of them is classified behind it, so none would survive (the same answer, no clip).
+    const Vec& centre = g_.leaf_centre[leaf];
+    const double reach = -g_.leaf_radius[leaf] - kOnEpsilon;
+    if (head.portalplane.distance(centre) < reach || prev.portalplane.distance(centre) < reach)
+        return false;
+    for (int t = 0; t < 2 && level_ > t; ++t)
+        for (uint32_t i = 0; i < f.separators[t].count; ++i)
+            if (f.separators[t].planes[i].distance(centre) < reach)
+                return false;
     for (uint32_t k = g_.leaf_first[leaf]; k < g_.leaf_first[leaf + 1]; ++k) {
         const uint32_t into = g_.leaf_portals[k] ^ 1u; // the twin of a portal out of `leaf` leads in
         for (bool& used : f.slot_used)
