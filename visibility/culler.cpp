@@ -68,10 +68,12 @@ std::optional<CullMode> parse_cull_mode(const std::string& name)
 
 Culler::Culler(const Zone& zone, const Pvs* pvs)
     : zone_(&zone), pvs_(pvs), locator_(zone.tree, zone.bounds()), boxes_(region_bounds(zone)),
-      zone_bounds_(zone.bounds()), face_stamp_(zone.mesh.faces.size(), 0)
+      words_(region_bounds(zone)), zone_bounds_(zone.bounds()), face_stamp_(zone.mesh.faces.size(), 0)
 {
+    plane_scale_ = words_.coordinate_scale();
     if (zone.region_count() >= kBlocksFrom) {
         blocks_.emplace(region_bounds(zone));
+        plane_scale_ = std::max(plane_scale_, blocks_->coordinate_scale());
         every_region_.assign(bits::words_for(zone.region_count()), 0);
         bits::fill(every_region_, zone.region_count());
     }
@@ -121,8 +123,9 @@ static float reach_limit(const Camera& camera)
 }
 
 // Keeps, in order, the first `count` regions whose box is within the far plane's reach.
-size_t Culler::keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count) const
+size_t Culler::keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count, CullWork& work) const
 {
+    work.boxes += uint32_t(count);
     const glm::vec3 eye = camera.position;
     const float limit = reach_limit(camera);
     size_t kept = 0;
@@ -131,6 +134,12 @@ size_t Culler::keep_near(const Camera& camera, std::vector<uint32_t>& regions, s
         kept += size_t(boxes_.squared_distance(regions[i], eye) <= limit);
     }
     return kept;
+}
+
+// Whether the frustum is the first stage after the PVS (no distance stage in between).
+static bool frustum_now_possible(const FrustumBoxes::PlaneGroups* planes, bool want_distance)
+{
+    return planes != nullptr && !want_distance;
 }
 
 CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::vector<uint32_t>& visible)
@@ -183,25 +192,29 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
     // reach, into `visible`; the frustum then tests those in place.
     const bool want_distance = options.distance_stage;
     const bool want_frustum = options.mode == CullMode::Frustum || options.mode == CullMode::PvsFrustum;
-    std::optional<FrustumBoxes::PlaneGroups> planes;
+    const FrustumBoxes::PlaneGroups* planes = nullptr;
     if (want_frustum) {
         const Frustum frustum = Frustum::from_view_projection(camera.view_projection());
-        planes = FrustumBoxes::prepare(frustum,
-                                       far_plane_reaches_everything(camera) ? FrustumBoxes::Planes::SidesOnly
-                                                                            : FrustumBoxes::Planes::All,
-                                       blocks_ ? blocks_->coordinate_scale() : 0.0f);
+        FrustumBoxes::prepare(frustum,
+                              far_plane_reaches_everything(camera) ? FrustumBoxes::Planes::SidesOnly
+                                                                   : FrustumBoxes::Planes::All,
+                              plane_scale_, planes_);
+        planes = &planes_;
     }
     // Big zones with many candidates: whole blocks of ids at a time, for the distance and the
     // frustum (the same answers). A sparse row (a Quake map's ~150 of 1 200) is cheaper region by
     // region than the walk of the block tree over the whole zone.
     const size_t candidate_count = stats.pvs_used ? stats.regions_after_pvs : region_count;
     const bool by_blocks = blocks_ && !add_own_region && (planes || want_distance) && candidate_count >= kBlocksFrom;
-    if (!(by_blocks && planes)) // the block stage's frustum fills `visible` itself
+    // The row a word at a time, through the word boxes (RowWordBoxes): a sparse row with the
+    // frustum stage first.
+    const bool by_words = !by_blocks && stats.pvs_used && frustum_now_possible(planes, want_distance) && !add_own_region;
+    if (!(by_blocks && planes) && !by_words) // the block and word stages fill `visible` themselves
         visible.resize(stats.regions_after_pvs);
     size_t kept = 0;
     // The first stage after the PVS: every candidate is written and the count advances only for
     // the ones kept, no branch on the test's answer. With a distance stage the frustum runs after.
-    const bool frustum_now = planes && !want_distance;
+    const bool frustum_now = frustum_now_possible(planes, want_distance);
     const auto consider = [&](uint32_t r) {
         visible[kept] = r;
         kept += frustum_now ? size_t(boxes_.intersects(r, *planes)) : 1u;
@@ -213,7 +226,7 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
             stats.pvs_us += clock.lap();
             near_.resize(candidates.size());
             stats.regions_after_distance =
-                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), near_));
+                uint32_t(blocks_->keep_near(candidates, boxes_, camera.position, reach_limit(camera), near_, stats.work));
             survivors = near_;
             stats.distance_us = clock.lap();
         }
@@ -221,12 +234,20 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
             // Into scratch of the zone's size, then only the kept ids into `visible`: growing
             // `visible` to the row's size would zero tens of thousands of entries a frame.
             block_out_.resize(region_count);
-            kept = blocks_->collect(survivors, boxes_, *planes, block_scratch_, block_out_.data());
+            kept = blocks_->collect(survivors, boxes_, *planes, block_scratch_, block_out_.data(), stats.work);
             visible.assign(block_out_.begin(), block_out_.begin() + std::ptrdiff_t(kept));
         } else {
+            stats.work.row_words += uint32_t(survivors.size());
             bits::for_each_set(survivors, [&](size_t r) { visible[kept++] = uint32_t(r); });
         }
+    } else if (by_words) {
+        // Into scratch of the zone's size, then only the kept ids into `visible` (as the block stage).
+        block_out_.resize(region_count);
+        kept = words_.collect(row, boxes_, *planes, block_out_.data(), stats.work);
+        visible.assign(block_out_.begin(), block_out_.begin() + std::ptrdiff_t(kept));
     } else if (stats.pvs_used) {
+        stats.work.row_words += uint32_t(row.size());
+        stats.work.boxes += frustum_now ? stats.regions_after_pvs : 0;
         bits::for_each_set(row, [&](size_t r) {
             if (add_own_region && r > size_t(stats.region)) { // keep the list ascending
                 consider(uint32_t(stats.region));
@@ -238,17 +259,19 @@ CullStats Culler::cull(const Camera& camera, const CullOptions& options, std::ve
             consider(uint32_t(stats.region));
     } else if (frustum_now) {
         kept = boxes_.collect_all(*planes, visible.data()); // every region, four boxes at a time
+        stats.work.boxes += region_count;
     } else {
         for (uint32_t r = 0; r < region_count; ++r)
             consider(r);
     }
     if (want_distance && !by_blocks) {
         stats.pvs_us += clock.lap(); // walking the row's bits is the PVS stage's work
-        kept = keep_near(camera, visible, kept);
+        kept = keep_near(camera, visible, kept, stats.work);
         stats.regions_after_distance = uint32_t(kept);
         stats.distance_us = clock.lap();
         if (planes) {
             size_t inside = 0;
+            stats.work.boxes += uint32_t(kept);
             for (size_t i = 0; i < kept; ++i) {
                 visible[inside] = visible[i];
                 inside += size_t(boxes_.intersects(visible[i], *planes));

@@ -4,7 +4,8 @@
 //
 // The frustum stage tests the row's regions' boxes branch-free, four planes at a time
 // (FrustumBoxes; the same answers as Frustum::intersects), and uses only the four side planes
-// when the far plane lies beyond the whole zone. On zones of kBlocksFrom regions or more, a frame
+// when the far plane lies beyond the whole zone. A row reads a word of 64 regions at a time and
+// tests one box per word before its regions' boxes (RowWordBoxes: the same answers). On zones of kBlocksFrom regions or more, a frame
 // with kBlocksFrom candidates or more (after the PVS) first tests boxes over blocks of 64 regions
 // that lie together and over a tree of such blocks (RegionBlocks: the same answers), so a frame of
 // tens of thousands of regions tests one by one only those the frustum's boundary crosses.
@@ -31,6 +32,7 @@
 #include "visibility/pvs.h"
 #include "visibility/region_blocks.h"
 #include "visibility/region_locator.h"
+#include "visibility/row_word_boxes.h"
 #include "visibility/zone.h"
 
 #include <cstdint>
@@ -64,6 +66,8 @@ struct CullStats {
     uint64_t triangles_after_pvs = 0;
     uint64_t triangles_after_frustum = 0;
     double lookup_us = 0, pvs_us = 0, distance_us = 0, frustum_us = 0;
+    // The frame's work (cull_work.h), the same for the same zone, PVS and camera on any machine.
+    CullWork work;
     double cull_us() const { return lookup_us + pvs_us + distance_us + frustum_us; }
 };
 
@@ -102,7 +106,7 @@ private:
     void count_stage_triangles(std::span<const uint64_t> row, int32_t region, CullStats& stats,
                                const std::vector<uint32_t>& visible);
     bool far_plane_reaches_everything(const Camera& camera) const;
-    size_t keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count) const;
+    size_t keep_near(const Camera& camera, std::vector<uint32_t>& regions, size_t count, CullWork& work) const;
 
     const Zone* zone_;
     const Pvs* pvs_;
@@ -111,6 +115,9 @@ private:
     // Zones of kBlocksFrom regions or more: boxes over runs of ids, so the frustum decides whole
     // blocks (region_blocks.h; the same answers), and the all-visible row for frames without a PVS.
     std::optional<RegionBlocks> blocks_;
+    RowWordBoxes words_; // a box per row word: sparse rows (fewer than kBlocksFrom candidates)
+    float plane_scale_ = 0.0f;          // the largest box coordinate: the planes' round-off margins
+    FrustumBoxes::PlaneGroups planes_;  // the frame's planes, refilled each frame
     std::vector<uint64_t> every_region_;
     std::vector<uint64_t> near_; // the distance stage's survivors, as a row
     RegionBlocks::Scratch block_scratch_;

@@ -264,12 +264,17 @@ void RegionBlocks::take_tested_members(uint32_t block, uint64_t tested, std::spa
 }
 
 size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& regions,
-                             const FrustumBoxes::PlaneGroups& planes, Scratch& scratch, uint32_t* out) const
+                             const FrustumBoxes::PlaneGroups& planes, Scratch& scratch, uint32_t* out,
+                             CullWork& work) const
 {
     std::vector<uint64_t>& taken = scratch.bits;
     taken.assign(row.size(), 0);
+    work.row_words += uint32_t(row.size());
     // Only the planes that cross a node are tested for its children (as Quake's clip flags).
-    const auto decide = [&](uint32_t box, unsigned& crossing) { return nodes_.classify(box, planes, crossing); };
+    const auto decide = [&](uint32_t box, unsigned& crossing) {
+        ++work.blocks;
+        return nodes_.classify(box, planes, crossing);
+    };
     // A run block reads its row bits in two words and tests only the fours the row holds; another
     // block tests every member (a gather of 64 row bits costs more than the tests it saves on the
     // dense rows this stage runs for) and looks up the row only for those the frustum keeps.
@@ -284,26 +289,35 @@ size_t RegionBlocks::collect(std::span<const uint64_t> row, const FrustumBoxes& 
             const uint64_t in_row = members_in_row(block, row);
             if (in_row != 0)
                 set_members(block, in_row & member_boxes_.intersect_mask(first, count, planes, crossing, in_row), taken);
+            uint64_t fours = in_row | in_row >> 1;
+            fours |= fours >> 2;
+            work.boxes += 4 * bits::popcount(fours & 0x1111111111111111u); // a group with a member tests all four
         } else if (any_member_in_row(block, row)) {
             take_tested_members(block, member_boxes_.intersect_mask(first, count, planes, crossing, ~uint64_t{0}), row, taken);
+            work.boxes += count;
         }
     };
     walk_all(FrustumBoxes::all_planes(planes), decide, take);
     for (uint32_t r : odd_)
-        if (bits::test(row, r) && regions.intersects(r, planes))
-            bits::set(taken, r);
+        if (bits::test(row, r)) {
+            ++work.boxes;
+            if (regions.intersects(r, planes))
+                bits::set(taken, r);
+        }
     size_t kept = 0;
     bits::for_each_set(std::span<const uint64_t>(taken), [&](size_t r) { out[kept++] = uint32_t(r); });
     return kept;
 }
 
 size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye,
-                               float limit, std::span<uint64_t> near) const
+                               float limit, std::span<uint64_t> near, CullWork& work) const
 {
     std::fill(near.begin(), near.end(), 0);
+    work.row_words += uint32_t(row.size());
     // Float distances of a box inside a node differ from the node's by far less than this.
     constexpr float kMargin = 1e-4f;
     const auto decide = [&](uint32_t box, unsigned) {
+        ++work.blocks;
         if (nodes_.squared_distance(box, eye) > limit * (1.0f + kMargin))
             return FrustumBoxes::Side::Outside;
         return nodes_.squared_reach(box, eye) < limit * (1.0f - kMargin) ? FrustumBoxes::Side::Inside
@@ -321,6 +335,7 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
         if (!run && !any_member_in_row(block, row))
             return;
         const uint64_t kept = member_boxes_.near_mask(first, count, eye, limit);
+        work.boxes += count;
         if (run)
             set_members(block, kept & members_in_row(block, row), near);
         else
@@ -328,8 +343,11 @@ size_t RegionBlocks::keep_near(std::span<const uint64_t> row, const FrustumBoxes
     };
     walk_all(0, decide, take);
     for (uint32_t r : odd_)
-        if (bits::test(row, r) && regions.squared_distance(r, eye) <= limit)
-            bits::set(near, r);
+        if (bits::test(row, r)) {
+            ++work.boxes;
+            if (regions.squared_distance(r, eye) <= limit)
+                bits::set(near, r);
+        }
     size_t kept = 0;
     for (uint64_t w : near)
         kept += bits::popcount(w);

@@ -21,9 +21,12 @@
 // stage's, ascending. keep_near() does the same for the far-plane sphere. Regions whose box is
 // empty or not finite are tested one by one, always.
 //
+// Both count their work (cull_work.h): nodes decided, boxes tested, row words read.
+//
 // Read-only after construction; the caller gives the scratch (one per thread).
 #pragma once
 
+#include "visibility/cull_work.h"
 #include "visibility/math/aabb.h"
 #include "visibility/math/frustum_boxes.h"
 
@@ -54,13 +57,25 @@ public:
     // prepared planes, as `regions` (every region's box, by id) answers for each; ascending.
     // Returns their count.
     size_t collect(std::span<const uint64_t> row, const FrustumBoxes& regions, const FrustumBoxes::PlaneGroups& planes,
-                   Scratch& scratch, uint32_t* out) const;
+                   Scratch& scratch, uint32_t* out, CullWork& work) const;
+    size_t collect(std::span<const uint64_t> row, const FrustumBoxes& regions, const FrustumBoxes::PlaneGroups& planes,
+                   Scratch& scratch, uint32_t* out) const
+    {
+        CullWork ignored;
+        return collect(row, regions, planes, scratch, out, ignored);
+    }
 
     // Sets in `near` (words_for(region count) words, overwritten) the regions of `row` whose
     // boxes come within squared distance `limit` of `eye` (regions.squared_distance(r, eye) <=
     // limit, the same answers as testing each) and returns their count.
     size_t keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye, float limit,
-                     std::span<uint64_t> near) const;
+                     std::span<uint64_t> near, CullWork& work) const;
+    size_t keep_near(std::span<const uint64_t> row, const FrustumBoxes& regions, const glm::vec3& eye, float limit,
+                     std::span<uint64_t> near) const
+    {
+        CullWork ignored;
+        return keep_near(row, regions, eye, limit, near, ignored);
+    }
 
     size_t memory_bytes() const;
     // Whether the blocks follow the file's numbering (else the Morton order); for reports and tests.

@@ -87,6 +87,39 @@ void BM_Cull_PvsFrustum(benchmark::State& state)
 }
 BENCHMARK(BM_Cull_PvsFrustum)->ArgName("time_stages")->Arg(1)->Arg(0);
 
+const std::vector<Camera>& camera_set(int64_t set);
+
+// The mean over the playable cameras (camera_set(1)), frame after frame: for profiles.
+void BM_Cull_PvsFrustum_Playable(benchmark::State& state)
+{
+    if (!e1m1()) {
+        state.SkipWithError("SKIPPED: needs ../shared/data/quake/e1m1.bsp");
+        return;
+    }
+    Culler culler(*e1m1(), &*e1m1()->baked_pvs);
+    std::vector<uint32_t> visible;
+    const auto& cameras = camera_set(1);
+    size_t i = 0;
+    double words = 0, blocks = 0, boxes = 0, candidates = 0, drawn = 0, lookup = 0, pvs = 0, frustum = 0;
+    for (auto _ : state) {
+        const CullStats s = culler.cull(cameras[i++ & 4095], {CullMode::PvsFrustum, false, state.range(0) != 0}, visible);
+        words += s.work.row_words, blocks += s.work.blocks, boxes += s.work.boxes;
+        candidates += s.regions_after_pvs, drawn += s.regions_after_frustum;
+        lookup += s.lookup_us, pvs += s.pvs_us, frustum += s.frustum_us;
+        benchmark::DoNotOptimize(visible.data());
+    }
+    const double n = double(state.iterations());
+    state.counters["row_words"] = words / n;
+    state.counters["blocks_tested"] = blocks / n;
+    state.counters["boxes_tested"] = boxes / n;
+    state.counters["candidates"] = candidates / n;
+    state.counters["drawn"] = drawn / n;
+    state.counters["lookup_us"] = lookup / n;
+    state.counters["pvs_us"] = pvs / n;
+    state.counters["frustum_us"] = frustum / n;
+}
+BENCHMARK(BM_Cull_PvsFrustum_Playable)->ArgName("time_stages")->Arg(1)->Arg(0);
+
 // The per-frame distribution over the walk: each frame timed on its own (steady_clock, its
 // ~30-70 ns included), 10 passes over the 4096 frames. Counters:
 //  - median_us, p99_us, max_us: over all 40 960 timed frames, preemption by other jobs included;

@@ -10,7 +10,8 @@
 // counters mean_us and median_us are per frame.
 //
 // A third case reads, cold or warm, only the boxes any exact box-hierarchy cull must look at one by
-// one (BoundaryBoxReads): the memory floor under the culler's figure.
+// one (BoundaryBoxReads): the memory floor under the culler's figure; with reads:2, also the
+// camera's row decoded and the answer written (the regions to draw), which every culler does too.
 //
 //   build/tests/bench/bench_cull_outdoor --benchmark_repetitions=3
 #include "visibility/bit_row.h"
@@ -188,7 +189,11 @@ public:
         const FrustumBoxes packed(region_boxes(zone));
         RegionLocator locator(zone.tree, zone.bounds());
         std::vector<uint64_t> row(zone.baked_pvs->words_per_row());
+        Culler culler(zone, &*zone.baked_pvs);
         for (const Camera& camera : cameras()) {
+            answers_.emplace_back();
+            culler.cull(camera, {CullMode::PvsFrustum, false, false}, answers_.back());
+            region_.push_back(locator.locate(camera.position).region);
             std::vector<uint32_t>& ids = partial_.emplace_back();
             for_each_row_region(zone, locator, camera, row, [&](uint32_t r, const FrustumBoxes::PlaneGroups& planes) {
                 if (packed.classify(r, planes) == FrustumBoxes::Side::Partial)
@@ -214,8 +219,20 @@ public:
         return sum;
     }
     size_t count(size_t camera) const { return partial_[camera].size(); }
+    // What any culler must do besides: decode the camera's row and write its answer (the regions
+    // to draw, as the culler's `visible`), with the boundary boxes read as floats.
+    float read_row_boxes_and_write(size_t camera, const Pvs& pvs, std::vector<uint64_t>& row,
+                                   std::vector<uint32_t>& out) const
+    {
+        if (region_[camera] >= 0)
+            pvs.decode_row(uint32_t(region_[camera]), row);
+        out.assign(answers_[camera].begin(), answers_[camera].end());
+        return read_floats(camera);
+    }
 
 private:
+    std::vector<std::vector<uint32_t>> answers_; // per camera: the culler's answer
+    std::vector<int32_t> region_;               // per camera: its region
     std::vector<std::vector<float>> coords_;
     std::vector<std::array<uint8_t, 6>> bytes_;
     std::vector<std::vector<uint32_t>> partial_; // per camera, in region order
@@ -225,19 +242,23 @@ void BM_CullOutdoor_Floor_ReadBoundaryBoxes(benchmark::State& state)
 {
     static const BoundaryBoxReads reads(outdoor());
     uint64_t boxes = 0;
-    const bool bytes = state.range(1) != 0;
+    const int what = int(state.range(1)); // 0: floats, 1: bytes, 2: floats + the row + the answer
+    std::vector<uint64_t> row(outdoor().baked_pvs->words_per_row());
+    std::vector<uint32_t> out;
     run_frames(state, [&](size_t i) {
-        if (bytes)
+        if (what == 1)
             benchmark::DoNotOptimize(reads.read_bytes(i));
-        else
+        else if (what == 0)
             benchmark::DoNotOptimize(reads.read_floats(i));
+        else
+            benchmark::DoNotOptimize(reads.read_row_boxes_and_write(i, *outdoor().baked_pvs, row, out));
         boxes += reads.count(i);
     });
     state.counters["boundary_boxes"] = double(boxes) / double(state.iterations() * cameras().size());
 }
 BENCHMARK(BM_CullOutdoor_Floor_ReadBoundaryBoxes)
-    ->ArgNames({"cold", "bytes"})
-    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->ArgNames({"cold", "reads"})
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
     ->Iterations(3)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 } // namespace

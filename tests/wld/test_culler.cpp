@@ -4,6 +4,7 @@
 #include "tests/support/test_data.h"
 #include "visibility/bit_row.h"
 #include "visibility/culler.h"
+#include "visibility/eval/camera_set.h"
 #include "visibility/region_lookup.h"
 #include "wld/gen/generate_outdoor_zone.h"
 #include "wld/zone_file.h"
@@ -176,6 +177,39 @@ TEST(Culler, ModeNamesRoundTrip)
     for (CullMode m : {CullMode::None, CullMode::Frustum, CullMode::Pvs, CullMode::PvsFrustum})
         EXPECT_EQ(parse_cull_mode(cull_mode_name(m)), m);
     EXPECT_FALSE(parse_cull_mode("everything").has_value());
+}
+
+// The row's regions, a word of them at a time (row_word_boxes.h), with or without the stage
+// clock: the drawn list is exactly each candidate's own box test, over 4096 playable cameras.
+TEST_F(CullE1m1, WordStageDrawsExactlyWhatPerRegionTestsWould)
+{
+    Camera lens;
+    lens.aspect = 4.0f / 3.0f;
+    const std::vector<Camera> cameras = random_cameras_in_regions(*zone_, 4096, 2026, lens);
+    Culler culler(*zone_, &*zone_->baked_pvs);
+    std::vector<uint32_t> visible;
+    std::vector<uint64_t> row(zone_->baked_pvs->words_per_row());
+    size_t drawn = 0;
+    for (const Camera& camera : cameras) {
+        const CullStats stats = culler.cull(camera, {CullMode::PvsFrustum, false, false}, visible);
+        ASSERT_GE(stats.region, 0);
+        zone_->baked_pvs->decode_row(uint32_t(stats.region), row);
+        const Frustum frustum = Frustum::from_view_projection(camera.view_projection());
+        // The culler's rule: the side planes only when the far plane lies beyond the whole zone.
+        const Aabb world = zone_->bounds();
+        const glm::vec3 d = glm::max(glm::abs(world.min - camera.position), glm::abs(world.max - camera.position));
+        const bool sides_only = glm::dot(d, d) < camera.far_distance * camera.far_distance;
+        std::vector<uint32_t> expected;
+        for (uint32_t r = 0; r < zone_->region_count(); ++r) {
+            const Aabb& box = zone_->regions[r].bounds;
+            if ((bits::test(row, r) || r == uint32_t(stats.region)) &&
+                (sides_only ? frustum.intersects_sides(box) : frustum.intersects(box)))
+                expected.push_back(r);
+        }
+        ASSERT_EQ(visible, expected);
+        drawn += visible.size();
+    }
+    EXPECT_GT(drawn, 4096u * 10);
 }
 
 TEST_F(CullE1m1, CameraExactlyOnASplitPlaneGetsTheTieRulesRegion)

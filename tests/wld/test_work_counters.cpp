@@ -6,22 +6,22 @@
 // naming the map, the counter and both values. A count more than 5 % below passes with a note, so
 // the baseline is tightened in a commit that says why; changing it is always such a commit.
 //
-// To rewrite the baseline after a deliberate change, run the tests with
-// PVSCOPE_WORK_BASELINE_OUT=FILE (each case appends its lines) and replace the committed file.
+// To rewrite the baseline after a deliberate change: tests/support/work_baseline.h.
 //
 // The bakes are what users run: `pvscope bake MAP --method portal-full` on maps without a portal
 // file (from the tree, Quake's default sky rule; Doom maps in the plane), `pvscope vis MAP` on maps
 // with qbsp's .prt beside them (over its clusters for PRT2 and Quake 2).
 #include "tests/support/freedoom.h"
 #include "tests/support/test_data.h"
+#include "tests/support/work_baseline.h"
 #include "visibility/methods/vis_method.h"
 #include "visibility/methods/vis_report_fields.h"
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
 #include "wld/common/read_file.h"
 #include "wld/doom/doom_map.h"
-#include "wld/doom/wad_file.h"
 #include "wld/doom/doom_zone.h"
+#include "wld/doom/wad_file.h"
 #include "wld/quake/prt_file.h"
 #include "wld/quake2/ibsp38_file.h"
 #include "wld/quake2/quake2_vis.h"
@@ -30,52 +30,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <sstream>
 
 namespace {
 
 using namespace pvs;
-
-constexpr double kRiseAllowed = 1.05; // a count may rise 5 % over its baseline
-constexpr double kFallNoted = 0.95;
-
-struct Case {
-    std::string name;     // the baseline's key: "quake/e1m1.bsp" or "freedoom2.wad:MAP10"
-    std::string relative; // shared data path, or the IWAD's name
-    std::string map;      // Doom: the map
-};
-
-std::string baseline_path() { return std::string(PVSCOPE_SOURCE_DIR) + "/tests/baselines/work_counters.tsv"; }
-
-// key -> counter -> value
-using Baseline = std::map<std::string, std::map<std::string, uint64_t>>;
-
-Baseline read_baseline()
-{
-    Baseline b;
-    std::ifstream in(baseline_path());
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.empty() || line[0] == '#')
-            continue;
-        std::istringstream fields(line);
-        std::string key, counter;
-        uint64_t value = 0;
-        if (std::getline(fields, key, '\t') && std::getline(fields, counter, '\t') && fields >> value)
-            b[key][counter] = value;
-    }
-    return b;
-}
-
-const Baseline& baseline()
-{
-    static const Baseline b = read_baseline();
-    return b;
-}
 
 std::map<std::string, uint64_t> work_of(const std::vector<ReportField>& fields)
 {
@@ -124,31 +83,7 @@ std::map<std::string, uint64_t> bake_portal_full(const Zone& zone, unsigned thre
 
 void check_against_baseline(const std::string& key, const std::map<std::string, uint64_t>& measured)
 {
-    ASSERT_FALSE(measured.empty()) << key << ": the bake reported no work counters";
-    if (const char* out = std::getenv("PVSCOPE_WORK_BASELINE_OUT")) {
-        std::ofstream file(out, std::ios::app);
-        for (const auto& [counter, value] : measured)
-            file << key << '\t' << counter << '\t' << value << '\n';
-    }
-    const auto entry = baseline().find(key);
-    ASSERT_NE(entry, baseline().end()) << key << " has no line in " << baseline_path()
-                                       << " (add it: PVSCOPE_WORK_BASELINE_OUT, see the top of this test)";
-    for (const auto& [counter, value] : measured) {
-        const auto base = entry->second.find(counter);
-        if (base == entry->second.end()) {
-            ADD_FAILURE() << key << ": counter " << counter << " = " << value << " has no baseline";
-            continue;
-        }
-        EXPECT_LE(double(value), kRiseAllowed * double(base->second))
-            << key << ": " << counter << " rose from " << base->second << " (baseline) to " << value << " (+"
-            << 100.0 * (double(value) / double(base->second) - 1.0) << " %)";
-        if (double(value) < kFallNoted * double(base->second))
-            std::printf("NOTE %s: %s fell from %llu (baseline) to %llu: tighten the baseline\n", key.c_str(),
-                        counter.c_str(), static_cast<unsigned long long>(base->second),
-                        static_cast<unsigned long long>(value));
-    }
-    for (const auto& [counter, value] : entry->second)
-        EXPECT_TRUE(measured.contains(counter)) << key << ": counter " << counter << " is no longer reported";
+    test::check_work("work_counters.tsv", key, measured);
 }
 
 class QuakeWork : public testing::TestWithParam<const char*> {};

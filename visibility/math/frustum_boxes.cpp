@@ -29,10 +29,17 @@ FrustumBoxes::FrustumBoxes(std::span<const Aabb> boxes)
 FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes planes, float coordinate_scale)
 {
     PlaneGroups g;
+    prepare(frustum, planes, coordinate_scale, g);
+    return g;
+}
+
+void FrustumBoxes::prepare(const Frustum& frustum, Planes planes, float coordinate_scale, PlaneGroups& g)
+{
     const int plane_count = planes == Planes::All ? 6 : 4;
     g.group_count = planes == Planes::All ? 2 : 1;
     g.plane_count = plane_count;
-    for (int lane = 0; lane < 8; ++lane) {
+    // Only the groups tested are filled (group_count), and the spread values only for real planes.
+    for (int lane = 0; lane < 4 * g.group_count; ++lane) {
         const int group = lane / 4, k = lane % 4;
         // A lane without a plane: n = 0 and dist = -1, so every distance is +1 (in front).
         const Plane p = lane < plane_count ? frustum.planes[size_t(lane)] : Plane{{0.0f, 0.0f, 0.0f}, -1.0f};
@@ -49,12 +56,13 @@ FrustumBoxes::PlaneGroups FrustumBoxes::prepare(const Frustum& frustum, Planes p
         const float magnitude = (std::abs(p.normal.x) + std::abs(p.normal.y) + std::abs(p.normal.z)) * coordinate_scale +
                                 std::abs(p.dist);
         g.margin[group][k] = 1e-5f * magnitude;
+        if (lane >= plane_count)
+            continue;
         const float values[7] = {g.pos_x[group][k], g.pos_y[group][k], g.pos_z[group][k], g.neg_x[group][k],
                                  g.neg_y[group][k], g.neg_z[group][k], g.dist[group][k]};
         for (int v = 0; v < 7; ++v)
             std::fill_n(g.splat[lane][v], 4, values[v]);
     }
-    return g;
 }
 
 FrustumBoxes::Side FrustumBoxes::classify(uint32_t box, const PlaneGroups& planes) const
@@ -232,25 +240,32 @@ const bool kHasAvx = cpu_has_avx();
 uint64_t FrustumBoxes::intersect_mask(uint32_t first, uint32_t count, const PlaneGroups& planes, unsigned crossing,
                                       uint64_t wanted) const
 {
-    uint64_t mask = 0;
-    uint32_t i = 0;
+    // The groups (eight with AVX, else four) that hold a wanted box, found a word operation at a
+    // time; after the last whole four, box by box.
+    const auto low_bits = [](uint32_t n) { return n >= 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1; };
+    const uint32_t whole = count & ~3u;
+    uint64_t mask = 0, rest = wanted & low_bits(whole);
 #if defined(PVS_EIGHT_BOXES_AVX)
     if (kHasAvx)
-        for (; i + 8 <= count; i += 8)
-            if ((wanted >> i) & 255u) {
-                const size_t at = size_t(first) + i;
-                // Only the fours `wanted` names keep their bits, as the four-box path gives them.
-                const unsigned fours = ((wanted >> i) & 15u ? 15u : 0u) | ((wanted >> (i + 4)) & 15u ? 240u : 0u);
-                mask |= uint64_t(intersect_eight_avx(&min_x_[at], &min_y_[at], &min_z_[at], &max_x_[at], &max_y_[at],
-                                                     &max_z_[at], planes, crossing) &
-                                 fours)
-                        << i;
-            }
+        for (uint64_t left = rest & low_bits(count & ~7u); left != 0;) {
+            const uint32_t i = uint32_t(std::countr_zero(left)) & ~7u;
+            left &= ~(uint64_t{255} << i);
+            rest &= ~(uint64_t{255} << i);
+            const size_t at = size_t(first) + i;
+            // Only the fours `wanted` names keep their bits, as the four-box path gives them.
+            const unsigned fours = ((wanted >> i) & 15u ? 15u : 0u) | ((wanted >> (i + 4)) & 15u ? 240u : 0u);
+            mask |= uint64_t(intersect_eight_avx(&min_x_[at], &min_y_[at], &min_z_[at], &max_x_[at], &max_y_[at],
+                                                 &max_z_[at], planes, crossing) &
+                             fours)
+                    << i;
+        }
 #endif
-    for (; i + 4 <= count; i += 4)
-        if ((wanted >> i) & 15u)
-            mask |= uint64_t(intersect_four(size_t(first) + i, planes, crossing)) << i;
-    for (; i < count; ++i)
+    for (uint64_t left = rest; left != 0;) {
+        const uint32_t i = uint32_t(std::countr_zero(left)) & ~3u;
+        left &= ~(uint64_t{15} << i);
+        mask |= uint64_t(intersect_four(size_t(first) + i, planes, crossing)) << i;
+    }
+    for (uint32_t i = whole; i < count; ++i)
         if ((wanted >> i) & 1u)
             mask |= uint64_t(intersects(first + i, planes)) << i;
     return mask;

@@ -52,6 +52,8 @@ public:
     // `coordinate_scale`: the largest absolute coordinate of the boxes that will be classified
     // (sets PlaneGroups::margin; 0 when classify is not used).
     static PlaneGroups prepare(const Frustum& frustum, Planes planes, float coordinate_scale = 0.0f);
+    // The same, into `out` (a frame's planes are 1.2 KB: the culler keeps one and refills it).
+    static void prepare(const Frustum& frustum, Planes planes, float coordinate_scale, PlaneGroups& out);
 
     // Where box i lies for the prepared planes, decided so that every box inside it gets the
     // answer intersects() gives it: Outside (behind some plane by more than its round-off

@@ -9,8 +9,9 @@ from their tree, written once with `bake --write-prt`), with and without the fas
 order alternating, so a slow moment of a shared host falls on both; the ratio of the medians is the
 figure. A peer that takes longer than --peer-timeout is stopped there once and not repeated.
 
-Rows: the pvscope runs read the peer's output file, so their JSON report compares pvscope's rows with
-the peer's (`file_pvs`: bits only pvscope's, bits only the peer's). With --reference, `pvscope compare
+Rows: after the timed runs pvscope runs once more, untimed, on the peer's output file, so its JSON
+report compares pvscope's rows with the peer's (`file_pvs`: bits only pvscope's, bits only the
+peer's). With --reference, `pvscope compare
 --methods file` (the converged sampled reference, minutes on big maps) gives the missing and excess
 bits of both outputs.
 
@@ -26,6 +27,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import statistics
 import subprocess
 import sys
@@ -54,15 +56,19 @@ def timed(cmd, cwd, timeout=None):
     """Runs cmd under /usr/bin/time: (wall s, CPU s, peak RSS KiB, status)."""
     timing = Path(cwd) / ".time"
     start = time.monotonic()
+    # A session of its own, so a timeout stops the tool, not only /usr/bin/time above it.
+    proc = subprocess.Popen(["/usr/bin/time", "-f", "%e %U %S %M", "-o", str(timing)] + [str(c) for c in cmd],
+                            cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, start_new_session=True)
     try:
-        proc = subprocess.run(["/usr/bin/time", "-f", "%e %U %S %M", "-o", str(timing)] + [str(c) for c in cmd],
-                              cwd=cwd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, timeout=timeout)
+        _, err = proc.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
         return time.monotonic() - start, None, None, "timeout"
     wall = time.monotonic() - start  # /usr/bin/time's %e counts in 10 ms steps
     fields = timing.read_text().split()[-4:]
     user, system, rss = float(fields[1]), float(fields[2]), int(fields[3])
-    status = "ok" if proc.returncode == 0 else "exit %d: %s" % (proc.returncode, proc.stderr.decode()[-200:].strip())
+    status = "ok" if proc.returncode == 0 else "exit %d: %s" % (proc.returncode, err.decode()[-200:].strip())
     return wall, user + system, rss, status
 
 
@@ -157,8 +163,6 @@ def run_case(c, args, work, runs):
             if tool == "peer" and peer_timed_out:
                 continue
             d = fresh(c.inputs, folder / tool)
-            if tool == "ours" and peer_out is not None:
-                shutil.copyfile(peer_out, d / c.output)  # the peer's rows, for the report's comparison
             cmd = c.peer(d) if tool == "peer" else c.ours(d)
             wall, cpu, rss, status = timed(cmd, d, args.peer_timeout if tool == "peer" else None)
             runs.append({"corpus": c.corpus, "map": c.name, "mode": c.mode, "tool": tool, "rep": rep,
@@ -170,8 +174,12 @@ def run_case(c, args, work, runs):
                 elif status == "ok" and peer_out is None:
                     peer_out = work / "peer-output"
                     shutil.copyfile(d / c.output, peer_out)
-            else:
-                c.report = json.loads((d / "report.json").read_text()) if (d / "report.json").exists() else {}
+    # Untimed: pvscope once more, on the peer's output, so its report compares the two PVSs.
+    d = fresh(c.inputs, folder / "rows")
+    if peer_out is not None:
+        shutil.copyfile(peer_out, d / c.output)
+    subprocess.run([str(x) for x in c.ours(d)], cwd=d, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    c.report = json.loads((d / "report.json").read_text()) if (d / "report.json").exists() else {}
     mine = [r for r in runs if r["map"] == c.name and r["mode"] == c.mode and r["corpus"] == c.corpus]
     return summarise(c, mine, peer_timed_out, args)
 
