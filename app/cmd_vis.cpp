@@ -1,4 +1,5 @@
 #include "app/cmd_vis.h"
+#include "app/vis_quake2.h"
 
 #include "app/arguments.h"
 #include "app/cli_validators.h"
@@ -81,15 +82,7 @@ int ambient_only(const VisCommandOptions& o, const std::string& map, std::FILE* 
         throw FileError(map, 0, "--ambient-only: the map has no PVS to compute ambient sounds from (run vis first)");
     const std::vector<quake::AmbientLevels> levels =
         quake::compute_ambient_levels(bytes, *zone.baked_pvs, ambient_classes(o), map);
-    const std::string temporary = temporary_beside(map);
-    try {
-        write_whole_file(temporary, quake::with_ambient_levels(bytes, levels, map));
-    } catch (...) {
-        std::error_code ec;
-        fs::remove(temporary, ec);
-        throw;
-    }
-    replace_map(temporary, map);
+    replace_atomically(map, quake::with_ambient_levels(bytes, levels, map));
     size_t with_sound = 0;
     for (const quake::AmbientLevels& l : levels)
         with_sound += l != quake::AmbientLevels{0, 0, 0, 0};
@@ -108,102 +101,6 @@ std::vector<uint8_t> read_file_head(const std::string& path, size_t count)
     return head;
 }
 
-// Writes `bytes` over the map through a temporary file beside it.
-void write_in_place(const std::string& map, const std::vector<uint8_t>& bytes)
-{
-    const std::string temporary = temporary_beside(map);
-    try {
-        write_whole_file(temporary, bytes);
-    } catch (...) {
-        std::error_code ec;
-        fs::remove(temporary, ec);
-        throw;
-    }
-    replace_map(temporary, map);
-}
-
-// --report for a Quake 2 map: what was written and the flow's figures (nulls with --phs-only).
-nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> before,
-                             const quake2::Quake2VisResult& r)
-{
-    const VisReport& v = r.report;
-    const auto baked = [&](auto value) { return o.phs_only ? nlohmann::json(nullptr) : nlohmann::json(value); };
-    nlohmann::json j = {{"input", map},
-            {"output", map},
-            {"format", "Quake 2 (IBSP 38)"},
-            {"method", o.phs_only ? "phs-only" : (o.fast ? "portal-fast" : o.method)},
-            {"level", baked(o.level)},
-            {"threads", baked(v.threads)},
-            {"portal_source", baked(fs::path(map).replace_extension(".prt").string())},
-            {"portals", baked(v.portals)},
-            {"portals_skipped", baked(v.portals_skipped)},
-            {"clusters", r.clusters},
-            {"mean_visible", r.mean_visible},
-            {"mean_hearable", r.mean_hearable},
-            {"phs_rule", o.phs_rule},
-            {"time_seconds", baked(v.seconds)},
-            {"base_seconds", baked(v.base_seconds)},
-            {"peak_rss_bytes", peak_rss_bytes()}};
-    if (!o.phs_only)
-        for (const ReportField& f : vis_report_fields(v, !(o.fast || o.method == "portal-fast"), false))
-            if (f.name.starts_with(kWorkPrefix))
-                report::add_report_fields(j, {f});
-    // The PVS the map held before against the one written.
-    const Zone old_zone = quake2::load_ibsp38(before, map), new_zone = quake2::load_ibsp38(r.map, map);
-    j["regions"] = new_zone.region_count();
-    j["file_pvs"] = old_zone.baked_pvs && new_zone.baked_pvs ? report::pvs_diff_json(*new_zone.baked_pvs, *old_zone.baked_pvs)
-                                                             : nlohmann::json(nullptr);
-    return j;
-}
-
-int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
-               const std::atomic<bool>* cancel)
-{
-    if (o.ambient_only) {
-        std::fprintf(err, "pvscope: error: %s is a Quake 2 map: --ambient-only is for Quake maps (Quake 2 keeps no "
-                          "ambient sounds in the map)\n",
-                     map.c_str());
-        return 2;
-    }
-    quake2::Quake2VisOptions q;
-    q.vis.method = o.fast || o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
-    q.vis.level = o.level;
-    q.vis.threads = o.threads;
-    std::optional<quake::PrtFile> prt;
-    const std::string prt_path = (fs::path(map).replace_extension(".prt")).string();
-    if (!o.phs_only) {
-        if (!fs::is_regular_file(prt_path)) {
-            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it)\n", prt_path.c_str());
-            return 1;
-        }
-        prt = quake::load_prt(prt_path);
-    }
-    std::optional<ProgressBar> bar;
-    if (!o.phs_only)
-        bar.emplace(err, "vis");
-    q.vis.progress = [&](double fraction) {
-        if (bar)
-            bar->update(fraction);
-        return !(cancel && cancel->load());
-    };
-    q.phs = o.phs_rule == "ericw" ? quake2::PhsRule::EricwTools : quake2::PhsRule::Quake2;
-    q.phs_only = o.phs_only;
-    const quake2::Quake2VisResult r = quake2::vis_quake2_map(bytes, map, prt ? &*prt : nullptr, prt_path, q);
-    if (bar)
-        bar->finish(r.cancelled ? "cancelled" : "done");
-    if (r.cancelled) {
-        std::fprintf(err, "pvscope: vis cancelled: %s left as it was\n", map.c_str());
-        return kExitCancelled;
-    }
-    write_in_place(map, r.map);
-    std::fprintf(err, "%s: Quake 2 map, %u clusters: %s, mean %.1f visible, %.1f hearable (%s PHS)%s\n", map.c_str(),
-                 r.clusters, o.phs_only ? "PVS kept" : "PVS baked", r.mean_visible, r.mean_hearable,
-                 q.phs == quake2::PhsRule::Quake2 ? "Quake 2's" : "ericw-tools'",
-                 o.phs_only ? "" : (", " + std::to_string(r.report.seconds) + " s").c_str());
-    if (!o.report.empty())
-        write_report(o.report, quake2_report(o, map, bytes, r));
-    return 0;
-}
 
 // vis through bake: the PVS from MAP.prt or (--portals tree) from the BSP tree, written to a
 // temporary file beside the map that then replaces it. Quake maps get ambient sounds, Quake 2

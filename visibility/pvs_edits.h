@@ -1,4 +1,4 @@
-// Hand edits of a PVS with undo and redo (issue 16): force a pair visible or hidden, in one
+// Hand edits of a PVS with undo and redo: force a pair visible or hidden, in one
 // direction or both, or replace a whole row (filled from another PVS, or cleared to the region
 // itself). Map authors fix what a bake got wrong; the edits survive a re-bake as an edit list.
 //

@@ -32,6 +32,7 @@ PvsWriteback write_hepvs_of(const Zone& zone, const Pvs& pvs, const std::string&
     write_whole_file(out_path, write_hepvs(hepvs));
     return {": " + std::to_string(hepvs.counts.x) + " x " + std::to_string(hepvs.counts.y) +
                 " x " + std::to_string(hepvs.counts.z) + " cells, " + std::to_string(hepvs.names.size()) + " objects",
+            {},
             {}};
 }
 
@@ -42,6 +43,7 @@ PvsWriteback write_gl_pvs_of(const Zone& zone, const ZoneLoadOptions& load, cons
     write_whole_file(out_path, doom::with_gl_pvs(gl, map.source.gl_marker, doom::gl_pvs_lump(pvs)));
     return {": " + map.source.gl_path + " with GL_PVS (" + std::to_string(pvs.region_count()) +
                 " subsectors)",
+            {},
             {}};
 }
 
@@ -72,6 +74,7 @@ PvsWriteback write_in_zone_format(const Zone& zone, const ZoneLoadOptions& load,
                                        : ", ambient sounds kept as they were";
         return {": " + std::to_string(stats.rows) + " rows, " + std::to_string(stats.unique_rows) +
                     " distinct, " + std::to_string(stats.visdata_bytes) + " bytes of visdata" + sounds,
+                {},
                 {}};
     }
     if (quake2::looks_like_ibsp38(bytes)) {
@@ -80,7 +83,7 @@ PvsWriteback write_in_zone_format(const Zone& zone, const ZoneLoadOptions& load,
         char line[160];
         std::snprintf(line, sizeof line, ": %u clusters (the leaves' rows ORed per cluster), mean %.1f visible, %.1f hearable",
                       q.clusters, q.mean_visible, q.mean_hearable);
-        return {line, {}};
+        return {line, {}, quake2::quake2_written_fields(q.clusters, q.mean_visible, q.mean_hearable, options.phs)};
     }
     if (doom::looks_like_wad(bytes))
         return write_gl_pvs_of(zone, load, pvs, out_path);

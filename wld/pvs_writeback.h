@@ -15,6 +15,7 @@
 // that changed since, std::invalid_argument for a PVS of the wrong size.
 #pragma once
 
+#include "visibility/methods/report_field.h"
 #include "visibility/pvs.h"
 #include "visibility/zone.h"
 #include "wld/quake/ambient_sounds.h"
@@ -38,6 +39,10 @@ struct PvsWriteOptions {
 struct PvsWriteback {
     std::string summary;            // one line for the user: what was written
     std::vector<std::string> notes; // what the writer had to say (S3D)
+    // What was written, for reports (report_field.h). A Quake 2 map: its rows are per cluster, so
+    // quake2_written_fields: "clusters", "mean_visible" and "mean_hearable" per cluster row, and
+    // "phs_rule".
+    std::vector<ReportField> fields;
 };
 
 PvsWriteback write_pvs_in_zone_format(const Zone& zone, const ZoneLoadOptions& load, const Pvs& pvs,

@@ -262,6 +262,33 @@ TEST_F(VisCommand, Quake2ReportNamesWhatWasWritten)
     EXPECT_EQ(j.at("threads"), 2);
 }
 
+// --portals tree goes through bake, and its report says what the map now holds as the portal
+// file's report does: the map's clusters and the clusters per cluster row of the PVS and the PHS
+// written (counted here in the rows read back), and the PHS rule.
+TEST_F(VisCommand, Quake2TreeReportGivesTheClustersWritten)
+{
+    SHARED_DATA_OR_SKIP(source, "modern-quake/q2/q2_tjunc_matrix.bsp");
+    const std::string map = copy({"modern-quake/q2/q2_tjunc_matrix.bsp"});
+    ASSERT_FALSE(map.empty());
+    const std::string report = path("tree-report.json");
+    ASSERT_EQ(vis_cli({"vis", "--portals", "tree", "-threads", "2", "--report", report, map}), 0) << err_;
+    const std::vector<uint8_t> text = read_bytes(report);
+    const nlohmann::json j = nlohmann::json::parse(text.begin(), text.end());
+    const quake2::Ibsp38File out = quake2::read_ibsp38(read_bytes(map), map);
+    ASSERT_GT(out.clusters, 0u);
+    const auto bits = [](const std::vector<uint64_t>& rows) {
+        uint64_t n = 0;
+        for (uint64_t w : rows)
+            n += uint64_t(std::popcount(w));
+        return n;
+    };
+    EXPECT_EQ(j.at("clusters"), out.clusters);
+    EXPECT_DOUBLE_EQ(j.at("mean_visible").get<double>(), double(bits(out.pvs_rows)) / out.clusters);
+    EXPECT_DOUBLE_EQ(j.at("mean_hearable").get<double>(), double(bits(out.phs_rows)) / out.clusters);
+    EXPECT_EQ(j.at("phs_rule"), "quake2");
+    EXPECT_EQ(j.at("portal_source"), "tree");
+}
+
 // `bake` on a Quake 2 map: portals from the tree per leaf (Quake 2's content rule), the leaves'
 // rows ORed per cluster. Every cluster row holds no cluster ericw's lacks (ericw's clusters see
 // through detail brushes; the tree's leaves do not), the two maps without detail get ericw's rows

@@ -4,7 +4,7 @@
 //  - the baseline, measured in the same run: "plain-full", the same baker with passages and
 //    target checks off (VisParams::passage_budget_bytes = 0, target_checks = false): ericw's flow
 //    as written, same input; the summary counts the bits in which the rows differ (target checks
-//    may only remove some, portal_vis.h). The baker from before issue 6's speed work, which was
+//    may only remove some, portal_vis.h). The baker from before the speed work, which was
 //    the baseline until then, is in git (tests/bench/reference/ at commit a3773cf);
 //  - BM_VisScaling/<method>/rooms:<n>: generated zones (wld/gen, GenParams::bake off, seed 1) of
 //    50, 150, 500, 1500 and 5000 rooms, 2 threads, with their regions and portals as counters:

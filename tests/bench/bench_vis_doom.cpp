@@ -3,7 +3,7 @@
 // the baseline a user would otherwise have). GL nodes by glbsp (made once, in a temp dir).
 //   build/tests/bench/bench_vis_doom --benchmark_counters_tabular=true
 // Maps: freedoom2 MAP10, MAP28, freedoom1 E3M7 (glVIS 1.6 -O3 took 13.1, 18.3 and 31.3 s on this
-// machine kind, issue 15) and MAP12 (glVIS: more than 19 minutes; the 3-D baseline is not run).
+// machine kind) and MAP12 (glVIS: more than 19 minutes; the 3-D baseline is not run).
 #include "tests/support/freedoom.h"
 #include "visibility/bsp_tree_edit.h"
 #include "visibility/portal/portal_vis.h"

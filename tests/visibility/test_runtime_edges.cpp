@@ -1,4 +1,4 @@
-// Runtime failure modes (issue 13 part 3), on the crafted door-8 case (wld/gen/stability_cases.h:
+// Runtime failure modes, on the crafted door-8 case (wld/gen/stability_cases.h:
 // room A x in [0, 128], doorway D x in [128, 136] y in [60, 68], room B x in [136, 264], open
 // from z = 0 to 96; its tree sends points on a plane to the high side, TieRule::OnPlaneGoesFront):
 // every odd camera gets a defined result, stated in culler.h, and never an empty frame.

@@ -1,4 +1,4 @@
-// Bad Doom WADs (issue 15): overlapping lumps, missing GL lumps, seg and vertex indices out of
+// Bad Doom WADs: overlapping lumps, missing GL lumps, seg and vertex indices out of
 // range, a subsector of minisegs only, node children that are not a tree, and sweeps of
 // truncations and byte changes of real GL nodes (glbsp's, for the hand-made map) in which the
 // reader must succeed or throw FileError naming the file, never crash or read out of bounds.

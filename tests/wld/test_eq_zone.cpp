@@ -769,7 +769,9 @@ TEST(EqZoneBmp, RefusesHeadersLargerThanTheFile)
     EXPECT_FALSE(decode_bmp(std::vector<uint8_t>{'B', 'M', 1}).has_value());
 }
 
-TEST(EqZoneBmp, RandomByteChangesNeverCrash)
+// Random byte changes give an image whose pixels the file's bytes can hold (at least one bit
+// each), with width x height x 4 bytes of RGBA, or nullopt with a reason: never a crash.
+TEST(EqZoneBmp, RandomByteChangesGiveAWholeImageOrAReason)
 {
     const std::vector<uint8_t> good = encode_bmp(7, 5, std::vector<uint8_t>(7 * 5 * 4, 200));
     std::mt19937 rng(7);
@@ -777,7 +779,16 @@ TEST(EqZoneBmp, RandomByteChangesNeverCrash)
         std::vector<uint8_t> bad = i % 2 ? good : palettized_bmp();
         for (int k = 0; k < 1 + i % 4; ++k)
             bad[rng() % bad.size()] = uint8_t(rng());
-        (void)decode_bmp(bad);
+        std::string why;
+        const std::optional<RgbaImage> image = decode_bmp(bad, &why);
+        if (!image) {
+            EXPECT_FALSE(why.empty()) << "case " << i;
+            continue;
+        }
+        ASSERT_GT(image->width, 0u) << "case " << i;
+        ASSERT_GT(image->height, 0u) << "case " << i;
+        ASSERT_LE(uint64_t(image->width) * image->height, 8 * uint64_t(bad.size())) << "case " << i;
+        ASSERT_EQ(image->rgba.size(), size_t(image->width) * image->height * 4) << "case " << i;
     }
 }
 

@@ -153,6 +153,38 @@ TEST_P(Quake2Zone, EricwsPvsHoldsEverySampledSightLine)
     EXPECT_GT(bits_found, zone.region_count()) << "the reference found pairs beyond each region itself";
 }
 
+// The counts `info` shows are the map's: the areas its leaves are in (read here from the raw
+// leaves lump: contents, cluster, area) and its func_areaportal entities (counted in the entity
+// text), not the lumps' entries, which hold an unused area 0 and each door twice after an unused
+// entry 0.
+TEST_P(Quake2Zone, InfoCountsTheAreasAndAreaportalsTheMapHolds)
+{
+    SHARED_DATA_OR_SKIP(path, std::string("modern-quake/q2/") + GetParam() + ".ericw-vis.bsp");
+    const std::vector<uint8_t> bytes = test::read_bytes(path);
+    const int32_t leaves_at = at<int32_t>(bytes, 8 + 8 * 8), leaves_length = at<int32_t>(bytes, 8 + 8 * 8 + 4);
+    std::set<int16_t> areas;
+    for (int32_t i = 0; i < leaves_length / 28; ++i)
+        if (const int16_t area = at<int16_t>(bytes, size_t(leaves_at + 28 * i + 6)); area > 0)
+            areas.insert(area);
+    const int32_t entities_at = at<int32_t>(bytes, 8), entities_length = at<int32_t>(bytes, 12);
+    const std::string entities(bytes.begin() + entities_at, bytes.begin() + entities_at + entities_length);
+    uint64_t doors = 0;
+    for (size_t p = entities.find("\"func_areaportal\""); p != std::string::npos;
+         p = entities.find("\"func_areaportal\"", p + 1))
+        ++doors;
+    const Zone zone = load_zone(path);
+    const auto count = [&](const char* name) {
+        for (const auto& [key, value] : zone.source.counts)
+            if (key == name)
+                return value;
+        ADD_FAILURE() << name << " not counted";
+        return uint64_t(0);
+    };
+    EXPECT_EQ(count("areas"), areas.size());
+    EXPECT_EQ(count("areaportals"), doors);
+    EXPECT_EQ(zone.area_portals.size(), doors);
+}
+
 INSTANTIATE_TEST_SUITE_P(EricwTools, Quake2Zone, ::testing::ValuesIn(kMaps));
 
 TEST(Quake2ZoneRules, PlainLiquidsAndGlassBlockSightTranslucentOnesDoNot)

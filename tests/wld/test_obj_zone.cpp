@@ -90,15 +90,28 @@ TEST(ObjZone, BadObjNamesTheObjectAndItsLine)
     EXPECT_THROW(load_zone(write_text("empty.obj", "# nothing\nv 0 0 0\n")), FileError);
 }
 
-// Every truncation and a sweep of byte changes either loads or is refused with FileError: never a
-// crash or a read out of bounds (ASan in CI).
+// Every truncation and a sweep of byte changes either loads a zone that is safe to use (every
+// index in range, one cell per region, rows for every region) or is refused with FileError
+// naming the file: never a crash or a read out of bounds (ASan in CI).
 TEST(ObjZone, TruncatedOrDamagedTextIsLoadedOrRefused)
 {
     const std::string text = kTwoRooms;
     const auto survives = [](const std::string& bytes) {
         try {
-            read_obj_zone(std::vector<uint8_t>(bytes.begin(), bytes.end()), "damaged.obj");
-        } catch (const FileError&) {
+            const Zone zone = read_obj_zone(std::vector<uint8_t>(bytes.begin(), bytes.end()), "damaged.obj");
+            ASSERT_EQ(zone.region_face_offsets.size(), zone.region_count() + 1);
+            for (uint32_t f : zone.region_faces)
+                ASSERT_LT(f, zone.mesh.faces.size());
+            for (uint32_t i : zone.mesh.indices)
+                ASSERT_LT(i, zone.mesh.positions.size());
+            if (zone.view_grid) {
+                ASSERT_EQ(zone.view_grid->cell_count(), zone.region_count());
+            }
+            if (zone.baked_pvs) {
+                ASSERT_EQ(zone.baked_pvs->region_count(), zone.region_count());
+            }
+        } catch (const FileError& e) {
+            EXPECT_EQ(e.file(), "damaged.obj");
         }
     };
     for (size_t cut = 0; cut <= text.size(); ++cut)

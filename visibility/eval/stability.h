@@ -1,5 +1,5 @@
 // How each visibility method holds up under transforms that change nothing a player could see
-// (visibility/transform/zone_transform.h): the engine of `pvscope stability`, issue 13 part 1.
+// (visibility/transform/zone_transform.h): the engine of `pvscope stability`.
 //
 // For each method of the registry asked for (methods/vis_method.h; portal-full at its default
 // level), the zone is baked as given and after each transform, and the transformed rows are

@@ -34,6 +34,11 @@ std::string format(const char* fmt, auto... args)
 
 const char* on_off(bool b) { return b ? "on" : "off"; }
 
+// What a user of a reference PVS must know.
+constexpr const char* kReferenceCanPop =
+    "warning: the reference is a lower bound (only sight lines it traced): culling with it can pop where a line it "
+    "did not find would have shown a region; use it to judge other PVSs";
+
 std::string no_label(const MethodSettings&) { return {}; }
 std::string full_label(const MethodSettings& s)
 {
@@ -57,21 +62,6 @@ VisParams vis_params(const MethodSettings& s, VisParams::Method method)
     params.target_checks = s.target_checks;
     params.progress = s.progress;
     return params;
-}
-
-PortalSet zone_portals(const Zone& zone, const MethodSettings& s)
-{
-    if (!zone.tree.exists() || zone.view_grid)
-        throw std::invalid_argument("portal vis needs a BSP tree, and " + zone.source.path +
-                                    " has none (an OBJ level: its cells are a grid)");
-    PortalOptions options;
-    options.sky = s.sky;
-    if (zone.tree.has_height_nodes() && !s.heights) {
-        // A 2-D method (glVIS): every region a column as high as the world, so sight passes
-        // over and under every step and door. The portals are those of the column tree.
-        return build_portals(without_height_nodes(zone.tree), zone.regions, zone_portal_world(zone), options);
-    }
-    return build_zone_portals(zone, options);
 }
 
 MethodRun run_from_report(Pvs pvs, const VisReport& report, double seconds, const std::string& what)
@@ -101,22 +91,55 @@ MethodRun run_none(const Zone&, const MethodSettings&)
     return run;
 }
 
-bool uses_2d_vis(const Zone& zone, bool heights) { return zone.tree.has_height_nodes() && !heights; }
+// Where the portals came from and what the build met, for the report.
+void add_portal_input_fields(const PortalInput& in, std::vector<ReportField>& fields)
+{
+    fields.push_back({"portal_source", in.source});
+    fields.push_back({"portalize_seconds", in.seconds});
+    if (in.stats) {
+        fields.push_back({"leaks.leaves_touching_world", uint64_t(in.stats->leaves_touching_world.size())});
+        fields.push_back({"leaks.leaves_touching_outside", uint64_t(in.stats->leaves_touching_outside.size())});
+    }
+}
 
+void add_cluster_fields(const ClusterReport& r, std::vector<ReportField>& fields)
+{
+    fields.push_back({"clusters.clusters", uint64_t(r.clusters)});
+    fields.push_back({"clusters.cluster_portals", uint64_t(r.cluster_portals)});
+    fields.push_back({"clusters.portals_inside_clusters", uint64_t(r.portals_inside_clusters)});
+    fields.push_back({"clusters.cluster_mean_visible", r.cluster_mean_visible});
+    fields.push_back({"clusters.expand_seconds", r.expand_seconds});
+}
+
+// The portals given (a file's) or built here; over clusters when they name clusters, on the 2-D
+// baker for a map extruded from 2-D.
 MethodRun run_portal(const Zone& zone, const MethodSettings& s, VisParams::Method method, const char* name)
 {
     const auto start = std::chrono::steady_clock::now();
+    const PortalInput built = s.portals ? PortalInput{} : zone_portal_input(zone, s);
+    const PortalInput& in = s.portals ? *s.portals : built;
+    const uint32_t regions = uint32_t(zone.region_count());
+    const bool flow_2d = !in.clusters && zone_uses_2d_vis(zone, s);
     VisReport report;
-    const PortalSet portals = zone_portals(zone, s);
-    const double portal_seconds = seconds_since(start);
-    Pvs pvs = uses_2d_vis(zone, s.heights)
-                  ? bake_portal_vis_2d(portals, uint32_t(zone.region_count()), vis_params(s, method), &report)
-                  : bake_portal_vis(portals, uint32_t(zone.region_count()), vis_params(s, method), &report);
-    const bool flow_2d = uses_2d_vis(zone, s.heights);
+    ClusterReport cluster_report;
+    Pvs pvs = in.clusters ? bake_cluster_portal_vis(in.portals, in.clusters->cluster_of_region,
+                                                    in.clusters->cluster_count, vis_params(s, method), &report,
+                                                    &cluster_report)
+              : flow_2d   ? bake_portal_vis_2d(in.portals, regions, vis_params(s, method), &report)
+                          : bake_portal_vis(in.portals, regions, vis_params(s, method), &report);
     MethodRun run = run_from_report(std::move(pvs), report, seconds_since(start),
                                     flow_2d ? std::string(name) + " (2-D)" : std::string(name));
+    run.notes = in.notes;
+    if (in.portals.portals.empty())
+        run.notes.push_back("warning: " + zone.source.path + " has no portals: every region will see only itself");
     run.fields = vis_report_fields(report, method == VisParams::Method::Full, flow_2d);
-    run.fields.push_back({"portalize_seconds", portal_seconds});
+    if (method == VisParams::Method::Full)
+        run.fields.push_back({"level", uint64_t(s.level)});
+    add_portal_input_fields(in, run.fields);
+    if (in.clusters) {
+        cluster_report.portals_inside_clusters = in.portals_inside_clusters;
+        add_cluster_fields(cluster_report, run.fields);
+    }
     return run;
 }
 
@@ -134,7 +157,7 @@ MethodRun run_portal_full(const Zone& zone, const MethodSettings& s)
 MethodRun run_clustered(const Zone& zone, const MethodSettings& s)
 {
     const auto start = std::chrono::steady_clock::now();
-    const PortalSet portals = zone_portals(zone, s);
+    const PortalSet portals = method_portals(zone, s);
     const bool boxes = regions_are_boxes(zone.regions, portals);
     const RegionClusters clusters =
         boxes ? box_merge_clusters(zone.regions, portals) : bsp_subtree_clusters(zone.tree, zone.regions);
@@ -144,6 +167,8 @@ MethodRun run_clustered(const Zone& zone, const MethodSettings& s)
                                         vis_params(s, VisParams::Method::Full), &report, &cluster_report);
     MethodRun run = run_from_report(std::move(pvs), report, seconds_since(start), "clustered");
     run.fields = vis_report_fields(report, true, false);
+    run.fields.push_back({"level", uint64_t(s.level)});
+    add_cluster_fields(cluster_report, run.fields);
     run.summary += format(" (%u %s clusters)", clusters.cluster_count, boxes ? "box" : "subtree");
     return run;
 }
@@ -169,6 +194,7 @@ MethodRun run_mesh_reference(const Zone& zone, const MethodSettings& s)
                          std::to_string(report.rays).c_str(), std::to_string(report.open_points).c_str(),
                          std::to_string(report.points).c_str(), std::to_string(report.open_cells).c_str(),
                          std::to_string(report.cells).c_str(), report.mean_visible, report.seconds, report.threads);
+    run.notes.push_back(kReferenceCanPop);
     if (s.on_reference_round && !report.cancelled) {
         ReferenceRound round;
         round.samples_per_region = samples;
@@ -212,6 +238,7 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
                          report.converged ? " (converged)" : "", report.seconds, report.threads);
     if (report.truncated_walks) // a walk that hit its depth limit or budget: degenerate portals
         run.summary += format("; %s walks cut short", std::to_string(report.truncated_walks).c_str());
+    run.notes.push_back(kReferenceCanPop);
     run.pvs = std::move(pvs);
     return run;
 }
@@ -251,6 +278,8 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
                          zone.view_grid ? "grid cells" : "regions", s.raster_resolution, s.raster_resolution,
                          s.raster_engine == RasterEngine::Rays ? "pixel rays" : "rasteriser",
                          report.mean_visible, report.seconds, report.threads);
+    run.notes.push_back("note: the raster PVS is a sample (what the rendered points saw): a camera between the "
+                        "points can see more; denser sampling (--step, --points, --resolution) only adds");
     run.pvs = std::move(pvs);
     return run;
 }
@@ -276,19 +305,19 @@ MethodRun run_terrain(const Zone& zone, const MethodSettings& s)
 }
 
 constexpr VisMethod kMethods[] = {
-    {"file", "the PVS stored in the zone file", Bound::Unknown, false, run_file, no_label},
-    {"none", "no PVS: the frustum only", Bound::Everything, false, run_none, no_label},
-    {"portal-fast", "base portal vis: loose, conservative", Bound::Upper, true, run_portal_fast, no_label},
-    {"portal-full", "clipped portal flow (as Quake's vis): conservative", Bound::Upper, true, run_portal_full,
+    {"file", "the PVS stored in the zone file", Bound::Unknown, false, false, run_file, no_label},
+    {"none", "no PVS: the frustum only", Bound::Everything, false, false, run_none, no_label},
+    {"portal-fast", "base portal vis: loose, conservative", Bound::Upper, true, false, run_portal_fast, no_label},
+    {"portal-full", "clipped portal flow (as Quake's vis): conservative", Bound::Upper, true, false, run_portal_full,
      full_label},
-    {"clustered", "portal-full over clusters of regions: faster on big zones, looser", Bound::Upper, true,
+    {"clustered", "portal-full over clusters of regions: faster on big zones, looser", Bound::Upper, true, true,
      run_clustered, full_label},
     {"terrain", "horizon over the zone's heightfield (open ground): conservative, hides only what hills hide",
-     Bound::Upper, true, run_terrain, no_label},
-    {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true,
+     Bound::Upper, true, true, run_terrain, no_label},
+    {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true, true,
      run_reference, reference_label},
     {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop",
-     Bound::Lower, true, run_raster, raster_label},
+     Bound::Lower, true, true, run_raster, raster_label},
 };
 
 } // namespace
@@ -310,24 +339,30 @@ Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights
     MethodSettings s;
     s.heights = heights;
     const bool own = zone.portals && !zone.tree.has_height_nodes();
-    const PortalSet built = own ? PortalSet{} : zone_portals(zone, s);
+    const PortalSet built = own ? PortalSet{} : method_portals(zone, s);
     const PortalSet& set = own ? *zone.portals : built;
     if (portal_count)
         *portal_count = set.portals.size();
-    return uses_2d_vis(zone, heights) ? bake_portal_vis_2d(set, uint32_t(zone.region_count()), params, report)
+    return zone_uses_2d_vis(zone, s) ? bake_portal_vis_2d(set, uint32_t(zone.region_count()), params, report)
                                       : bake_portal_vis(set, uint32_t(zone.region_count()), params, report);
 }
 
 std::span<const VisMethod> vis_methods() { return kMethods; }
 
-PortalSet method_portals(const Zone& zone, const MethodSettings& settings) { return zone_portals(zone, settings); }
+PortalSet method_portals(const Zone& zone, const MethodSettings& settings)
+{
+    MethodSettings plain = settings;
+    plain.box_clusters = false;
+    plain.portals = nullptr;
+    return zone_portal_input(zone, plain).portals;
+}
 
 VisParams method_vis_params(const MethodSettings& settings, VisParams::Method method)
 {
     return vis_params(settings, method);
 }
 
-bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings) { return uses_2d_vis(zone, settings.heights); }
+bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings) { return zone_uses_2d_vis(zone, settings); }
 
 const VisMethod* find_vis_method(std::string_view name)
 {

@@ -23,6 +23,7 @@
 // throw as the bakers do (std::invalid_argument, e.g. the reference on a zone without a tree).
 #pragma once
 
+#include "visibility/methods/portal_input.h"
 #include "visibility/portal/media.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/pvs.h"
@@ -56,6 +57,11 @@ struct MethodSettings {
     int level = 4;
     bool passages = true;
     bool target_checks = true;
+    // portal-fast and portal-full: the portals to bake on, when the caller has them (a portal
+    // file's, with its clusters; must outlive the run); nullptr: zone_portal_input builds them,
+    // grouped into box clusters with `box_clusters` where the regions are boxes.
+    const PortalInput* portals = nullptr;
+    bool box_clusters = false;
     // portal methods on zones extruded from 2-D maps (Doom, BspTree::first_height_node): false
     // = ignore floors and ceilings, as glVIS (safe while doors and lifts move); true = the
     // heights as built block sight (closed doors, floor/ceiling gaps): only for static maps.
@@ -85,6 +91,8 @@ struct MethodRun {
     // its work counters - deterministic for a zone, a method and its settings, on any machine and
     // at any thread count, so a rise is a regression that no clock noise hides.
     std::vector<ReportField> fields;
+    // What a user should hear besides the summary, one line each ("warning: ...", "note: ...").
+    std::vector<std::string> notes;
 };
 
 struct VisMethod {
@@ -92,6 +100,7 @@ struct VisMethod {
     std::string_view description;
     Bound bound;
     bool bakes;                     // false for file and none: nothing to compute
+    bool reads_drawing;             // reads the zone's mesh or textures (false: a caller may free them first)
     MethodRun (*run)(const Zone& zone, const MethodSettings& settings);
     // The settings this method reads, for a label such as "level=2 passages=off" (compare, chart).
     std::string (*label)(const MethodSettings& settings);
@@ -100,18 +109,18 @@ struct VisMethod {
 std::span<const VisMethod> vis_methods();
 
 // portal-fast / portal-full as the registry runs them, for callers with their own VisParams
-// (the inspector's Bake panel): the zone's own portals when it carries them, else portals built
-// from its tree; an extruded 2-D map (Doom) without `heights` gets the 2-D baker on its column
-// portals. `portal_count`, when given, receives the number of portals used.
+// (the inspector's Bake panel): the zone's own portals when it carries them, else those of
+// zone_portal_input (no clusters). `portal_count`,
+// when given, receives the number of portals used.
 Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights, VisReport* report,
                          size_t* portal_count = nullptr);
-// The portals portal-fast and portal-full bake on (built from the zone's tree; a map extruded
-// from 2-D without `heights`: its column portals), and whether they go to the 2-D baker
-// (bake_portal_vis_2d) rather than bake_portal_vis. Throws as those methods do (no tree).
+// The portals portal-fast and portal-full bake on when none are given (zone_portal_input's,
+// without clusters), and whether they go to the 2-D baker (bake_portal_vis_2d) rather than
+// bake_portal_vis. Throw as those methods do (no tree).
 PortalSet method_portals(const Zone& zone, const MethodSettings& settings);
+bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings);
 // The VisParams portal-fast / portal-full bake with for these settings.
 VisParams method_vis_params(const MethodSettings& settings, VisParams::Method method);
-bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings);
 
 // nullptr when no method has that name.
 const VisMethod* find_vis_method(std::string_view name);

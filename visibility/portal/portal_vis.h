@@ -122,20 +122,16 @@
 // VisReport::cancelled says so. An exception thrown by the callback stops the workers and is
 // rethrown.
 //
-// Speed (issue 6; tests/bench/bench_vis.cpp, docs/performance.md "Portal vis"). The flow's time
+// Speed (tests/bench/bench_vis.cpp, docs/performance.md "Portal vis"). The flow's time
 // goes to finding separators (test 0-3) and clipping windings by them, a few dozen dot products
 // per step on windings of about four points. ClipToSeparators finds the sides of B against A's
 // plane once per (A, B) pair instead of once per edge of A, tests a candidate plane with its
 // unnormalised normal (d^2 against ON_EPSILON^2 with d's sign: no square root or division for
 // the candidates that fail) starting from the candidate's neighbours on B (where a failing
-// candidate fails), and normalises only the plane it returns, exactly as before; clips classify
+// candidate fails), and normalises only the plane it returns; clips classify
 // points without branches; passages (above) then halve the number of flow steps, and target
-// checks (above) cut another third. Against the baker from before that work (kept as the
-// benchmark's baseline until commit a3773cf, tests/bench/reference/) the rows differed in one
-// bit on e1m1, e1m2 and start together (the target checks' bit above); without target checks
-// they were bit-identical, as only round-off in the candidate test could ever differ (a point
-// whose distance to a candidate plane is ±ON_EPSILON to within round-off). The benchmark's
-// baseline is now this baker with passages and target checks off.
+// checks (above) cut another third. The benchmark's baseline is this baker with passages and
+// target checks off.
 //
 // Memory. Two bit rows per directed portal (mightsee, visbits), dense (64-bit words of
 // region_count bits) only while a worker builds them, then kept as runs of nonzero words

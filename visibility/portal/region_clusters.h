@@ -1,5 +1,5 @@
 // Clusters of regions for clustered portal vis (cluster_vis.h), formed from any zone's BSP tree.
-// Measured for issue 6 (docs/performance.md, "Clusters"): generic and loss-free for sight lines
+// Measured (docs/performance.md, "Clusters"): generic and loss-free for sight lines
 // inside a cluster, but it finds almost nothing on the generated zones and the Quake maps (a
 // tree makes a leaf as soon as a cell holds one content, so an all-open subtree needs mixed
 // open contents, such as air over water). box_clusters.h is the grouping in use.

@@ -1,4 +1,4 @@
-// The raster baker (`--method raster`, issue 14): a PVS by sampling, as HateEngine's pvs_baker
+// The raster baker (`--method raster`): a PVS by sampling, as HateEngine's pvs_baker
 // does it (quake-doom-hepvs.md §5.6), on the CPU. For each cell, cube maps are rendered from
 // sample points in it (cube_raster.h) and every face with a pixel is seen; the cell's row is the
 // union of the regions of those faces (in an OBJ zone a face belongs to one object; where a face

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 namespace pvs {
 
 std::vector<uint8_t> read_whole_file(const std::string& path)
@@ -37,6 +39,26 @@ void write_whole_file(const std::string& path, std::span<const uint8_t> bytes)
     out.close(); // flushes: a full disk shows here, not silently in the destructor
     if (!out)
         throw FileError(path, 0, "write failed (" + std::string(std::strerror(errno)) + ")");
+}
+
+void replace_atomically(const std::string& path, std::span<const uint8_t> bytes)
+{
+    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+    std::error_code ec;
+    try {
+        write_whole_file(temporary, bytes);
+    } catch (...) {
+        std::filesystem::remove(temporary, ec);
+        throw;
+    }
+    if (const std::filesystem::file_status old = std::filesystem::status(path, ec); !ec && std::filesystem::exists(old))
+        std::filesystem::permissions(temporary, old.permissions(), ec); // a rewrite should not change who may read it
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw FileError(path, 0, "cannot replace the file: " + ec.message());
+    }
 }
 
 } // namespace pvs

@@ -142,27 +142,6 @@ bool same_file(const std::string& a, const std::string& b)
     return ec ? a == b : same;
 }
 
-// Readers see the old file or the new one, never half of one: the bytes go to a temporary
-// beside `path` (same file system, so the rename is atomic), which then replaces it.
-void replace_atomically(const std::string& path, std::span<const uint8_t> bytes)
-{
-    const std::string temporary = path + ".tmp" + std::to_string(::getpid());
-    std::error_code ec;
-    try {
-        write_whole_file(temporary, bytes);
-    } catch (...) {
-        fs::remove(temporary, ec);
-        throw;
-    }
-    if (const fs::file_status old = fs::status(path, ec); !ec && fs::exists(old))
-        fs::permissions(temporary, old.permissions(), ec); // a rewrite should not change who may read it
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw FileError(path, 0, "cannot replace the file: " + ec.message());
-    }
-}
 
 // Backs `original` up (when asked), then replaces it by `bytes`. Returns the backup's path.
 std::string rewrite(const WadFile& original, const std::vector<uint8_t>& bytes, bool backup)

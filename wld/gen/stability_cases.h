@@ -1,4 +1,4 @@
-// Crafted zones that each sit on one way a visibility method can fail (issue 13 part 2):
+// Crafted zones that each sit on one way a visibility method can fail:
 // `pvscope gen --case NAME`, `pvscope stability --cases`, the inspector's Stability panel.
 //
 // Each case is a handful of named boxes of open space (rooms, doorways, cracks, steps) in solid

@@ -1,4 +1,4 @@
-// A Wavefront OBJ level as a zone (issue 14): Debian's tinyobjloader parses the text; each object
+// A Wavefront OBJ level as a zone: Debian's tinyobjloader parses the text; each object
 // (`o`, or `g` where the file groups that way) becomes one region, a drawable group whose bounds
 // are its geometry's box and whose faces are its triangles, one Face per run of one material.
 // An OBJ zone has no BSP tree: where the camera is comes from a view grid when a .hepvs is

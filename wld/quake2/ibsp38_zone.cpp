@@ -378,12 +378,12 @@ void read_visibility(const Q2& q, const std::vector<int32_t>& cluster_of_region,
 
 // Areas and areaportals: per area its list of (portal number, other area); the portal's brush is
 // the leaves of CONTENTS_AREAPORTAL that qbsp left of it, each given to the portal whose two
-// areas are those of the open leaves around it.
+// areas are those of the open leaves around it. The counts a user sees are the map's: the areas
+// its leaves are in (qbsp keeps area 0 as an unused entry) and its func_areaportals (the links
+// lump holds each twice, once per side, after an unused entry 0).
 void read_areas(const Q2& q, Zone& zone)
 {
     const uint32_t areas = q.count(kQ2LumpAreas, kAreaBytes), links = q.count(kQ2LumpAreaPortals, kAreaPortalBytes);
-    zone.source.counts.emplace_back("areas", areas);
-    zone.source.counts.emplace_back("areaportals", links);
     std::map<uint32_t, size_t> portal_of_number;
     for (uint32_t a = 0; a < areas; ++a) {
         const uint64_t at = q.record(kQ2LumpAreas, kAreaBytes, a);
@@ -408,6 +408,12 @@ void read_areas(const Q2& q, Zone& zone)
             }
         }
     }
+    std::set<int32_t> leaf_areas;
+    for (const auto& leaf : q.file.leaves)
+        if (leaf.area > 0)
+            leaf_areas.insert(leaf.area);
+    zone.source.counts.emplace_back("areas", leaf_areas.size());
+    zone.source.counts.emplace_back("areaportals", zone.area_portals.size());
     std::vector<int32_t> touching;
     for (size_t i = 0; i < q.file.leaves.size(); ++i) {
         if (!(q.file.leaves[i].contents & kContentsAreaPortal))

@@ -119,4 +119,13 @@ RegionClusterMap region_clusters(std::span<const uint8_t> map, const std::string
     return region_clusters(read_ibsp38(map, file), file, zone);
 }
 
+std::vector<ReportField> quake2_written_fields(uint32_t clusters, double mean_visible, double mean_hearable,
+                                               PhsRule phs)
+{
+    return {{"clusters", uint64_t(clusters)},
+            {"mean_visible", mean_visible},
+            {"mean_hearable", mean_hearable},
+            {"phs_rule", std::string(phs == PhsRule::EricwTools ? "ericw" : "quake2")}};
+}
+
 } // namespace pvs::quake2

@@ -9,6 +9,7 @@
 // for a map or portal file it cannot use, never prints; a cancelled bake returns no bytes.
 #pragma once
 
+#include "visibility/methods/report_field.h"
 #include "visibility/portal/portal_vis.h"
 #include "wld/quake/prt_file.h"
 #include "visibility/zone.h"
@@ -38,6 +39,12 @@ struct Quake2VisResult {
 };
 
 // `prt`: the portal file (unused with phs_only; its leaf count must be the map's cluster count).
+// What a Quake 2 PVS and PHS as written hold, for reports (report_field.h): "clusters" (the map's
+// cluster count), "mean_visible" and "mean_hearable" (clusters per cluster row of the PVS and the
+// PHS: the rows the engine reads) and "phs_rule" (quake2 or ericw).
+std::vector<ReportField> quake2_written_fields(uint32_t clusters, double mean_visible, double mean_hearable,
+                                               PhsRule phs);
+
 Quake2VisResult vis_quake2_map(std::span<const uint8_t> map, const std::string& file, const quake::PrtFile* prt,
                                const std::string& prt_file, const Quake2VisOptions& options);
 
