@@ -1,6 +1,6 @@
 #include "app/bake_options.h"
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 
 #include <filesystem>
 

@@ -2,7 +2,7 @@
 // so every command refuses a bad --camera or --size with the same message before it runs.
 #pragma once
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>

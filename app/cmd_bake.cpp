@@ -1,6 +1,7 @@
 #include "app/cmd_bake.h"
 
-#include "app/arguments.h"
+#include "app/error_path.h"
+#include "app/output_files.h"
 #include "app/bake_input.h"
 #include "app/bake_output.h"
 #include "app/process_memory.h"
@@ -100,10 +101,8 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
     const auto load_start = std::chrono::steady_clock::now();
     BakeInput in = load_bake_input(o, err);
     const double load_seconds = seconds_since(load_start);
-    if (const std::string problem = check_against_input(o, in); !problem.empty()) {
-        std::fprintf(err, "pvscope: error: %s\n", problem.c_str());
-        return kExitBadArguments;
-    }
+    if (const std::string problem = check_against_input(o, in); !problem.empty())
+        return bad_arguments(err, problem);
     const VisMethod& method = *find_vis_method(o.method);
     if (!method.reads_drawing)
         drop_drawing(in);
@@ -140,31 +139,11 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
 
 } // namespace
 
-void write_report(const std::string& path, const nlohmann::json& report)
-{
-    const std::string text = report.dump(2) + "\n";
-    if (path == "-") {
-        std::fputs(text.c_str(), stdout);
-        return;
-    }
-    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
-}
-
 int run_bake(const BakeOptions& options, std::FILE* err, const std::atomic<bool>* cancel)
 {
-    if (const std::string problem = check_bake_options(options); !problem.empty()) {
-        std::fprintf(err, "pvscope: error: %s\n", problem.c_str());
-        return kExitBadArguments;
-    }
-    try {
-        return run_checked(options, err, cancel);
-    } catch (const FileError& e) {
-        std::fprintf(err, "pvscope: error: %s\n", e.what());
-        return kExitFileError;
-    } catch (const std::invalid_argument& e) { // the zone or portals cannot be written in the format
-        std::fprintf(err, "pvscope: error: %s: %s\n", options.input.c_str(), e.what());
-        return kExitFileError;
-    }
+    if (const std::string problem = check_bake_options(options); !problem.empty())
+        return bad_arguments(err, problem);
+    return run_reporting_errors(options.input, err, [&] { return run_checked(options, err, cancel); });
 }
 
 } // namespace pvs::app

@@ -29,7 +29,6 @@
 
 #include <atomic>
 #include <cstdio>
-#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 namespace pvs::app {
@@ -37,9 +36,6 @@ namespace pvs::app {
 // Runs the bake; messages and progress go to `err`. `cancel`, when given, is polled while the
 // bake runs (the command passes its SIGINT flag): true cancels. Returns the exit code.
 int run_bake(const BakeOptions& options, std::FILE* err = stderr, const std::atomic<bool>* cancel = nullptr);
-
-// Writes a --report JSON to `path` ("-": standard output); throws when the file cannot be written.
-void write_report(const std::string& path, const nlohmann::json& report);
 
 // Registers the subcommand; `exit_code` receives the command's result when it runs. While the
 // command runs, SIGINT sets a flag that cancels the bake (the previous handler is restored).

@@ -1,6 +1,7 @@
 #include "app/cmd_check.h"
+#include "app/error_path.h"
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 #include "app/zone_load_args.h"
 #include "report/zone_health_json.h"
 #include "visibility/eval/zone_check.h"
@@ -41,9 +42,12 @@ void print_text(const Zone& zone, const ZoneHealth& health, bool strict)
                 health.errors(), health.warnings(), strict ? " (--strict: warnings count)" : "");
 }
 
+// check's 1 is "unhealthy": a file it cannot read exits 2 (cmd_check.h).
+constexpr int kCheckUnreadable = 2;
+
 int run_check(const CheckCommandOptions& o)
 {
-    try {
+    return run_reporting_errors(o.path, stderr, [&] {
         const Zone zone = load_zone(o.path, o.load);
         CheckOptions options;
         options.sky = sky_mode_from_name(o.sky);
@@ -54,10 +58,7 @@ int run_check(const CheckCommandOptions& o)
         else
             print_text(zone, health, o.strict);
         return check_exit_code(health, o.strict);
-    } catch (const FileError& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 2;
-    }
+    }, {}, kCheckUnreadable);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "app/cmd_convert.h"
 
 #include "app/zone_load_args.h"
+#include "app/error_path.h"
 #include "visibility/file_error.h"
 #include "wld/convert.h"
 #include "wld/zone_file.h"
@@ -23,26 +24,22 @@ struct ConvertOptions {
 int run_convert(const ConvertOptions& o)
 {
     const auto output = zone_output_for(o.output, o.to);
-    if (!output) {
-        std::fprintf(stderr, "pvscope: error: cannot tell the output format of '%s': use .s3d or .obj, or --to\n",
-                     o.output.c_str());
-        return 2;
-    }
-    try {
+    if (!output)
+        return bad_arguments(stderr, "cannot tell the output format of '" + o.output + "': use .s3d or .obj, or --to");
+    return run_reporting_errors(o.input, stderr, [&] {
         const Zone zone = load_zone(o.input, o.load);
-        for (const std::string& note : write_zone(zone, o.output, *output))
+        std::vector<std::string> notes;
+        try {
+            notes = write_zone(zone, o.output, *output);
+        } catch (const std::invalid_argument& e) {
+            return file_error(stderr, o.input + " cannot be written as " + o.output + ": " + e.what());
+        }
+        for (const std::string& note : notes)
             std::printf("note: %s\n", note.c_str());
         std::printf("%s -> %s (%zu regions, %zu faces)\n", o.input.c_str(), o.output.c_str(), zone.region_count(),
                     zone.mesh.faces.size());
-        return 0;
-    } catch (const FileError& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 1;
-    } catch (const std::invalid_argument& e) {
-        std::fprintf(stderr, "pvscope: error: %s cannot be written as %s: %s\n", o.input.c_str(), o.output.c_str(),
-                     e.what());
-        return 1;
-    }
+        return kExitOk;
+    });
 }
 
 } // namespace

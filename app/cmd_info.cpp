@@ -1,6 +1,7 @@
 #include "app/cmd_info.h"
 
 #include "app/zone_load_args.h"
+#include "app/error_path.h"
 #include "report/zone_report.h"
 #include "visibility/file_error.h"
 #include "visibility/zone_stats.h"
@@ -89,16 +90,13 @@ void print_text(const Zone& zone, const ZoneStats& s, double load_ms)
 
 int run_info(const InfoOptions& options)
 {
-    try {
+    return run_reporting_errors(options.path, stderr, [&] {
         const auto start = std::chrono::steady_clock::now();
         const Zone zone = load_zone(options.path, options.load);
         const double load_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         print_zone_report(zone, load_ms, options.json);
-        return 0;
-    } catch (const FileError& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 1;
-    }
+        return kExitOk;
+    });
 }
 
 } // namespace

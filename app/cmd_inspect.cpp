@@ -1,7 +1,6 @@
 // The inspect command's options (cmd_inspect.h); the window itself is inspector_main.cpp's.
 #include "app/cmd_inspect.h"
 
-#include "app/arguments.h"
 #include "app/cli_validators.h"
 
 #include <memory>

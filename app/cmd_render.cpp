@@ -1,10 +1,12 @@
 #include "app/cmd_render.h"
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 #include "app/cli_validators.h"
 #include "app/pvs_source.h"
 #include "app/zone_load_args.h"
+#include "app/error_path.h"
 
+#include "ui/culled_frame.h"
 #include "ui/software_renderer.h"
 #include "visibility/culler.h"
 #include "visibility/file_error.h"
@@ -47,11 +49,9 @@ int run_render(const RenderOptions& options)
     const auto cull_mode = parse_cull_mode(options.cull);
     const bool locked = !options.cull_camera.empty();
     const auto cull_camera_values = locked ? parse_camera_argument(options.cull_camera) : std::nullopt;
-    if (!camera_values || !size || !mode || !cull_mode || (locked && !cull_camera_values)) {
-        std::fprintf(stderr, "pvscope: error: bad arguments (see pvscope render --help)\n");
-        return 2;
-    }
-    try {
+    if (!camera_values || !size || !mode || !cull_mode || (locked && !cull_camera_values))
+        return bad_arguments(stderr, "bad arguments (see pvscope render --help)");
+    return run_reporting_errors(options.path, stderr, [&] {
         const Zone zone = load_zone(options.path, options.load);
 
         // Both cameras share the lens (fov, aspect, near); the far clip is the culling camera's:
@@ -105,14 +105,8 @@ int run_render(const RenderOptions& options)
                     static_cast<unsigned long long>(s.triangles_after_pvs),
                     static_cast<unsigned long long>(s.triangles_after_frustum), cull_ms, render_ms, r.scene_ms,
                     r.draw_ms, image.width, image.height, ui::render_mode_name(*mode), options.output.c_str());
-        return 0;
-    } catch (const FileError& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 1;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 1;
-    }
+        return kExitOk;
+    });
 }
 
 } // namespace

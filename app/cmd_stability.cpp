@@ -1,6 +1,9 @@
 #include "app/cmd_stability.h"
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
+#include "app/error_path.h"
+#include "app/exit_codes.h"
+#include "app/output_files.h"
 #include "app/cli_validators.h"
 #include "app/progress_bar.h"
 #include "app/sigint_scope.h"

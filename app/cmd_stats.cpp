@@ -1,4 +1,5 @@
 #include "app/cmd_stats.h"
+#include "app/error_path.h"
 
 #include "report/json_csv.h"
 #include "report/region_report.h"
@@ -87,8 +88,7 @@ void print_summary(const std::vector<nlohmann::json>& rows, std::FILE* out)
 int run_stats(const StatsOptions& o, std::FILE* out, std::FILE* err)
 {
     if (o.inputs.empty()) {
-        std::fprintf(err, "pvscope: error: stats needs at least one file or folder\n");
-        return 2;
+        return bad_arguments(err, "stats needs at least one file or folder");
     }
     const std::vector<BatchItem> items = batch_items(o.inputs);
     std::vector<nlohmann::json> rows;
@@ -110,17 +110,17 @@ int run_stats(const StatsOptions& o, std::FILE* out, std::FILE* err)
             for (const RegionRow& row : region_rows(*loaded.zone))
                 region_fields_all.push_back(region_row_fields(item, *loaded.zone, row));
     }
-    try {
+    const int written = run_reporting_errors("stats", err, [&] {
         if (!o.csv.empty())
             write_text(o.csv, csv_table(zone_fields), out);
         if (!o.json.empty())
             write_text(o.json, nlohmann::json(rows).dump(2) + "\n", out);
         if (!o.regions_csv.empty())
             write_text(o.regions_csv, csv_table(region_fields_all), out);
-    } catch (const FileError& e) {
-        std::fprintf(err, "pvscope: error: %s\n", e.what());
-        return 1;
-    }
+        return kExitOk;
+    });
+    if (written != kExitOk)
+        return written;
     if (o.csv != "-" && o.json != "-" && o.regions_csv != "-")
         print_summary(rows, out);
     std::fprintf(err, "stats: %zu zones, %zu loaded, %zu failed\n", items.size(), items.size() - failed, failed);

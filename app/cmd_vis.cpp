@@ -1,7 +1,7 @@
 #include "app/cmd_vis.h"
+#include "app/error_path.h"
 #include "app/vis_quake2.h"
 
-#include "app/arguments.h"
 #include "app/cli_validators.h"
 #include "app/cmd_bake.h"
 #include "app/process_memory.h"
@@ -120,9 +120,8 @@ int vis_through_bake(const VisCommandOptions& o, const std::string& map, std::FI
     if (o.portals == "file") {
         const std::string prt = (fs::path(map).replace_extension(".prt")).string();
         if (!fs::is_regular_file(prt)) {
-            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it; or --portals tree "
-                              "to build portals from the BSP tree)\n", prt.c_str());
-            return 1;
+            return file_error(err, prt + ": no portal file beside the map (qbsp writes it; or --portals tree to build "
+                                   "portals from the BSP tree)");
         }
         b.prt_in = prt;
     }
@@ -142,20 +141,14 @@ int vis_through_bake(const VisCommandOptions& o, const std::string& map, std::FI
 
 int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
 {
-    if (o.visdist > 0.0) {
-        std::fprintf(err, "pvscope: error: -visdist is not supported: pvscope bakes what the portals let through; "
-                          "a distance cut belongs to the renderer's far plane\n");
-        return 2;
-    }
-    if (const std::string folder = missing_folder(o.report); !folder.empty()) {
-        std::fprintf(err, "pvscope: error: --report %s: no folder %s to write it in\n", o.report.c_str(), folder.c_str());
-        return 2;
-    }
+    if (o.visdist > 0.0)
+        return bad_arguments(err, "-visdist is not supported: pvscope bakes what the portals let through; a distance "
+                                  "cut belongs to the renderer's far plane");
+    if (const std::string folder = missing_folder(o.report); !folder.empty())
+        return bad_arguments(err, "--report " + o.report + ": no folder " + folder + " to write it in");
     const std::string map = map_path(o.map);
-    if (!fs::is_regular_file(map)) {
-        std::fprintf(err, "pvscope: error: %s: no such map\n", map.c_str());
-        return 1;
-    }
+    if (!fs::is_regular_file(map))
+        return file_error(err, map + ": no such map");
     const std::vector<uint8_t> head = read_file_head(map, 8);
     if (quake2::looks_like_ibsp38(head)) {
         if (o.portals == "file" || o.phs_only || o.ambient_only)
@@ -168,15 +161,13 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
     }
     if (!quake::detect_bsp_variant(head)) {
         const std::string header = quake::describe_bsp_header(head);
-        std::fprintf(err, "pvscope: error: %s: offset 0: not a Quake map (%s): vis writes Quake BSP 29, BSP2, 2PSB and "
-                          "Quake 2 IBSP 38 maps; `pvscope bake` writes the other formats\n",
-                     map.c_str(), header.starts_with("version ") ? "no BSP header" : header.c_str());
-        return 1;
+        return file_error(err, map + ": offset 0: not a Quake map (" +
+                                   (header.starts_with("version ") ? std::string("no BSP header") : header) +
+                                   "): vis writes Quake BSP 29, BSP2, 2PSB and Quake 2 IBSP 38 maps; `pvscope bake` "
+                                   "writes the other formats");
     }
-    if (o.phs_only) {
-        std::fprintf(err, "pvscope: error: --phs-only is for Quake 2 maps (IBSP 38); %s is not one\n", map.c_str());
-        return 2;
-    }
+    if (o.phs_only)
+        return bad_arguments(err, "--phs-only is for Quake 2 maps (IBSP 38); " + map + " is not one");
     if (o.ambient_only)
         return ambient_only(o, map, err);
     if (const int code = vis_through_bake(o, map, err, cancel); code != 0)
@@ -195,17 +186,8 @@ int run_vis_command(const VisCommandOptions& options, std::FILE* err, const std:
         if (const std::string map = map_path(options.map); fs::is_regular_file(map, ec))
             std::fprintf(err, "pvscope: %s left as it was\n", map.c_str());
     };
-    try {
-        return checked(options, err, cancel);
-    } catch (const FileError& e) {
-        std::fprintf(err, "pvscope: error: %s\n", e.what());
-        left_as_it_was();
-        return 1;
-    } catch (const std::invalid_argument& e) {
-        std::fprintf(err, "pvscope: error: %s\n", e.what());
-        left_as_it_was();
-        return 2;
-    }
+    return run_reporting_errors(map_path(options.map), err, [&] { return checked(options, err, cancel); },
+                                left_as_it_was);
 }
 
 std::vector<std::string> normalize_vis_arguments(const std::vector<std::string>& arguments)

@@ -21,6 +21,8 @@
 // Exit codes: 0 done, 1 a file could not be read or written, 2 bad arguments, 130 cancelled.
 #pragma once
 
+#include "app/vis_options.h"
+
 #include <CLI/App.hpp>
 
 #include <atomic>
@@ -29,23 +31,6 @@
 #include <vector>
 
 namespace pvs::app {
-
-struct VisCommandOptions {
-    std::string map;
-    std::string method = "portal-full";
-    std::string portals = "file"; // file (MAP.prt) | tree
-    int level = 4;
-    unsigned threads = 0;
-    bool fast = false;
-    bool ambient_only = false;
-    bool noambient = false, noambientsky = false, noambientwater = false, noambientslime = false,
-         noambientlava = false;
-    bool nostate = false;
-    double visdist = 0.0; // refused when set
-    std::string report;
-    bool phs_only = false;           // Quake 2: keep the PVS, make the PHS again
-    std::string phs_rule = "quake2"; // Quake 2: quake2 | ericw
-};
 
 int run_vis_command(const VisCommandOptions& options, std::FILE* err, const std::atomic<bool>* cancel = nullptr);
 

@@ -1,9 +1,10 @@
 #include "app/cmd_walk.h"
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 #include "app/cli_validators.h"
 #include "app/pvs_source.h"
 #include "app/zone_load_args.h"
+#include "app/error_path.h"
 #include "ui/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/eval/sight_check.h"
@@ -184,11 +185,9 @@ int run_walk(const WalkCommandOptions& o)
 {
     const auto size = parse_size_argument(o.size);
     const auto mode = parse_cull_mode(o.cull);
-    if (!size || !mode) {
-        std::fprintf(stderr, "pvscope: error: bad --size or --cull (see pvscope walk --help)\n");
-        return 2;
-    }
-    try {
+    if (!size || !mode)
+        return bad_arguments(stderr, "bad --size or --cull (see pvscope walk --help)");
+    return run_reporting_errors(o.path, stderr, [&] {
         const Zone zone = load_zone(o.path, o.load);
         const PvsSource source = make_pvs_source(zone, o.pvs);
         std::fprintf(stderr, "pvscope: PVS %s\n", source.note.c_str());
@@ -243,14 +242,8 @@ int run_walk(const WalkCommandOptions& o)
         if (!o.csv.empty())
             write_csv(o.csv, rows);
         print_summary(rows, o);
-        return 0;
-    } catch (const FileError& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 1;
-    } catch (const std::runtime_error& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-        return 1;
-    }
+        return kExitOk;
+    });
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "app/cmd_why.h"
+#include "app/error_path.h"
 
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 #include "app/cli_validators.h"
 #include "app/cli_validators.h"
 #include "app/progress_bar.h"
@@ -86,7 +87,7 @@ void print_text(const Zone& zone, const std::string& pvs_name, const PairExplana
 
 int run_why(const WhyCommandOptions& o)
 {
-    try {
+    return run_reporting_errors(o.path, stderr, [&] {
         const Zone zone = load_zone(o.path, o.load);
         // Explaining portal-full's own PVS: the flow run for the chain is that PVS (one bake, not two).
         const bool flow_is_the_pvs = o.pvs == "portal-full" && !zone.view_grid && !o.no_chain;
@@ -118,13 +119,8 @@ int run_why(const WhyCommandOptions& o)
             std::cout << pair_explanation_json(zone.source.path, o.pvs, e).dump(2) << "\n";
         else
             print_text(zone, o.pvs, e);
-        return 0;
-    } catch (const FileError& e) {
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-    } catch (const std::exception& e) { // a bad region id, a zone it cannot explain on, Embree failing
-        std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-    }
-    return 2;
+        return kExitOk;
+    }, {}, kExitBadArguments); // a bad region id, a zone it cannot explain on, Embree failing: 2 (cmd_why.h)
 }
 
 } // namespace

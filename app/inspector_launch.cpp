@@ -1,5 +1,6 @@
 // The hand-over to pvscope-inspector (inspector_launch.h).
 #include "app/inspector_launch.h"
+#include "app/error_path.h"
 
 #include <unistd.h>
 
@@ -24,8 +25,7 @@ int launch_inspector(char** argv)
     const std::string path = inspector_executable_path();
     std::fflush(stdout);
     execv(path.c_str(), argv);
-    std::fprintf(stderr, "pvscope: error: cannot start the inspector %s: %s\n", path.c_str(), std::strerror(errno));
-    return 1;
+    return file_error(stderr, "cannot start the inspector " + path + ": " + std::strerror(errno));
 }
 
 } // namespace pvs::app

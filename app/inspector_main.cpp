@@ -1,7 +1,7 @@
 // pvscope-inspector: the inspector window (ui/gui). `pvscope` starts it (inspector_launch.h)
 // with its own arguments -- `inspect [options]`, `FILE`, or nothing -- so this parses the same
 // command line, with the same options (cmd_inspect.h), and shows the same help.
-#include "app/arguments.h"
+#include "app/argument_parsers.h"
 #include "app/cmd_inspect.h"
 #include "app/process_memory.h"
 #include "ui/gui/inspector_app.h"

@@ -1,7 +1,7 @@
 // pvscope: inspector and command-line tool for visibility culling in classic 3-D worlds.
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together. The inspector
 // window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
-#include "app/arguments.h"
+#include "app/exit_codes.h"
 #include "app/cmd_bake.h"
 #include "app/cmd_check.h"
 #include "app/cmd_why.h"

@@ -1,6 +1,7 @@
 #include "app/vis_quake2.h"
 
-#include "app/arguments.h"
+#include "app/error_path.h"
+#include "app/output_files.h"
 #include "app/cmd_bake.h"
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
@@ -64,12 +65,9 @@ nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map,
 int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
                const std::atomic<bool>* cancel)
 {
-    if (o.ambient_only) {
-        std::fprintf(err, "pvscope: error: %s is a Quake 2 map: --ambient-only is for Quake maps (Quake 2 keeps no "
-                          "ambient sounds in the map)\n",
-                     map.c_str());
-        return kExitBadArguments;
-    }
+    if (o.ambient_only)
+        return bad_arguments(err, map + " is a Quake 2 map: --ambient-only is for Quake maps (Quake 2 keeps no ambient "
+                                        "sounds in the map)");
     quake2::Quake2VisOptions q;
     q.vis.method = o.fast || o.method == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
     q.vis.level = o.level;
@@ -77,10 +75,8 @@ int quake2_vis(const VisCommandOptions& o, const std::string& map, std::span<con
     std::optional<quake::PrtFile> prt;
     const std::string prt_path = (fs::path(map).replace_extension(".prt")).string();
     if (!o.phs_only) {
-        if (!fs::is_regular_file(prt_path)) {
-            std::fprintf(err, "pvscope: error: %s: no portal file beside the map (qbsp writes it)\n", prt_path.c_str());
-            return kExitFileError;
-        }
+        if (!fs::is_regular_file(prt_path))
+            return file_error(err, prt_path + ": no portal file beside the map (qbsp writes it)");
         prt = quake::load_prt(prt_path);
     }
     std::optional<ProgressBar> bar;

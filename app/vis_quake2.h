@@ -5,7 +5,7 @@
 // "clusters" what was written per cluster (quake2_written_fields).
 #pragma once
 
-#include "app/cmd_vis.h"
+#include "app/vis_options.h"
 
 #include <atomic>
 #include <cstdint>

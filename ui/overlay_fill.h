@@ -16,7 +16,8 @@
 #pragma once
 
 #include "ui/overlay_lines.h"
-#include "ui/software_renderer.h"
+#include "ui/colour_codes.h"
+#include "ui/image.h"
 #include "visibility/camera.h"
 #include "visibility/math/aabb.h"
 

@@ -10,7 +10,8 @@
 // its colour and alpha, and the composite blends them as a line blends over a picture.
 #pragma once
 
-#include "ui/software_renderer.h"
+#include "ui/colour_codes.h"
+#include "ui/image.h"
 
 #include <cstdint>
 #include <cstring>

@@ -1,5 +1,5 @@
 // Lines drawn over a rendered Image, on the CPU after read-back: the locked culling camera's
-// view volume (render_culled in ui/software_renderer.h), and anything else an overlay needs.
+// view volume (render_culled in ui/culled_frame.h), and anything else an overlay needs.
 //
 // Pixel coordinates: pixel (i, j) covers [i, i+1) x [j, j+1), x to the right, y down; the
 // image's own rows are top to bottom. A zone point is placed in the image with the view
@@ -21,7 +21,8 @@
 // pieces are drawn faint (kFaintLineAlpha of the colour over the picture) or not at all.
 #pragma once
 
-#include "ui/software_renderer.h"
+#include "ui/colour_codes.h"
+#include "ui/image.h"
 #include "visibility/camera.h"
 
 #include <array>

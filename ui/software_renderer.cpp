@@ -1,6 +1,5 @@
 #include "ui/software_renderer.h"
 
-#include "ui/overlay_lines.h"
 #include "ui/zone_scene.h"
 
 #include "ui/irrlicht_library.h"
@@ -15,12 +14,6 @@
 #include <SIrrCreationParameters.h>
 #include <matrix4.h>
 
-// The implementation is compiled here, with static linkage, so another module that also wants
-// stb_image_write (or links Debian's libstb) cannot collide with it.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb_image_write.h>
-
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -33,46 +26,6 @@
 #include <glm/trigonometric.hpp>
 
 namespace pvs::ui {
-
-const char* render_mode_name(RenderMode mode)
-{
-    switch (mode) {
-    case RenderMode::Textured: return "textured";
-    case RenderMode::RegionColors: return "regions";
-    case RenderMode::IdBuffer: return "ids";
-    case RenderMode::Flags: return "flags";
-    }
-    return "?";
-}
-
-std::optional<RenderMode> parse_render_mode(std::string_view name)
-{
-    for (RenderMode m : kRenderModes)
-        if (name == render_mode_name(m))
-            return m;
-    return std::nullopt;
-}
-
-uint32_t region_color(uint32_t region)
-{
-    // splitmix32-style finaliser: neighbouring ids get unrelated colours.
-    uint32_t h = region * 0x9E3779B9u + 0x7F4A7C15u;
-    h = (h ^ (h >> 16)) * 0x85EBCA6Bu;
-    h = (h ^ (h >> 13)) * 0xC2B2AE35u;
-    h ^= h >> 16;
-    auto channel = [](uint32_t bits) { return ((24 + bits % 104) << 1) | 1; }; // odd, 49 .. 255
-    return channel(h & 0x3FF) << 16 | channel((h >> 10) & 0x3FF) << 8 | channel(h >> 20);
-}
-
-void save_png(const Image& image, const std::string& path)
-{
-    if (image.width == 0 || image.height == 0 || image.rgba.size() != size_t(image.width) * image.height * 4)
-        throw std::runtime_error("cannot write " + path + ": the image is empty or its size is inconsistent");
-    if (image.width > 0x7FFFFFFFu / 4 || image.height > 0x7FFFFFFFu)
-        throw std::runtime_error("cannot write " + path + ": the image is too large for PNG output");
-    if (!stbi_write_png(path.c_str(), int(image.width), int(image.height), 4, image.rgba.data(), int(image.width * 4)))
-        throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
-}
 
 namespace {
 
@@ -313,19 +266,6 @@ Image SoftwareRenderer::draw_frame(const Zone& zone, const Camera& camera, const
     s.stats.faces_drawn = drawn.faces;
     s.stats.triangles_drawn = drawn.triangles;
     return image;
-}
-
-CulledFrame render_culled(SoftwareRenderer& renderer, Culler& culler, const Camera& view,
-                          const std::optional<Camera>& locked_cull_camera, const CullOptions& cull_options,
-                          RenderMode mode)
-{
-    CulledFrame frame;
-    const Camera& cull_camera = locked_cull_camera ? *locked_cull_camera : view;
-    frame.cull = culler.cull(cull_camera, cull_options, frame.visible);
-    frame.image = renderer.render(culler.zone(), view, frame.visible, mode);
-    if (locked_cull_camera && mode != RenderMode::IdBuffer)
-        draw_frustum(frame.image, view, *locked_cull_camera, kLockedFrustumColor);
-    return frame;
 }
 
 } // namespace pvs::ui

@@ -36,7 +36,9 @@
 // driver; the textures it adds to the driver are removed when the scene is destroyed.
 #pragma once
 
-#include "ui/software_renderer.h"
+#include "ui/colour_codes.h"
+#include "ui/image.h"
+#include "ui/render_mode.h"
 #include "visibility/zone.h"
 
 #include <S3DVertex.h>

@@ -4,6 +4,7 @@
 // on blank images; and on e1m1, tinted pixels from inside the slime and the water, and the lock.
 #include "tests/support/test_data.h"
 #include "ui/overlay_lines.h"
+#include "ui/culled_frame.h"
 #include "ui/software_renderer.h"
 #include "visibility/culler.h"
 #include "visibility/region_lookup.h"

@@ -23,24 +23,6 @@ double ms_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// CSR inverse of the zone's region -> faces lists: face -> regions, ascending.
-void build_face_regions(const Zone& zone, std::vector<uint32_t>& offsets, std::vector<uint32_t>& regions)
-{
-    const size_t faces = zone.mesh.faces.size();
-    offsets.assign(faces + 1, 0);
-    for (uint32_t face : zone.region_faces)
-        if (face < faces)
-            ++offsets[face + 1];
-    for (size_t f = 0; f < faces; ++f)
-        offsets[f + 1] += offsets[f];
-    regions.assign(offsets[faces], 0);
-    std::vector<uint32_t> fill(offsets.begin(), offsets.end() - 1);
-    for (uint32_t r = 0; r < zone.region_count(); ++r)
-        for (uint32_t face : zone.faces_of_region(r))
-            if (face < faces)
-                regions[fill[face]++] = r; // regions ascend, so each face's list does too
-}
-
 // How far a point can go from `from` along the horizontal `direction` and stay in regions
 // (sampled every `step`, up to `limit`).
 float free_distance(const Zone& zone, glm::vec3 from, glm::vec3 direction, float step, float limit)
@@ -144,7 +126,7 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     load_ms_ = load_ms;
     error_.clear();
     zone_stats_ = compute_zone_stats(*zone_);
-    build_face_regions(*zone_, face_region_offsets_, face_regions_);
+    face_regions_ = build_face_regions(*zone_);
     baked_pvs_.reset();
     editor_.reset();
     edited_pvs_.reset();
@@ -173,13 +155,7 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     reset_camera();
 }
 
-std::span<const uint32_t> InspectorState::regions_of_face(uint32_t face) const
-{
-    if (face + 1 >= face_region_offsets_.size())
-        return {};
-    return std::span<const uint32_t>(face_regions_)
-        .subspan(face_region_offsets_[face], face_region_offsets_[face + 1] - face_region_offsets_[face]);
-}
+std::span<const uint32_t> InspectorState::regions_of_face(uint32_t face) const { return face_regions_.of(face); }
 
 uint64_t InspectorState::region_triangles(uint32_t region) const
 {

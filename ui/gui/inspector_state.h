@@ -32,6 +32,7 @@
 #include "ui/zone_overlays.h"
 #include "visibility/camera.h"
 #include "visibility/culler.h"
+#include "visibility/face_regions.h"
 #include "visibility/eval/pair_explanation.h"
 #include "visibility/geometry/winding.h"
 #include "visibility/region_lookup.h"
@@ -329,7 +330,7 @@ private:
     double load_ms_ = 0;
     std::string error_;
     uint64_t zone_generation_ = 0;
-    std::vector<uint32_t> face_region_offsets_, face_regions_;
+    FaceRegions face_regions_;
 
     Camera view_, cull_;
     bool locked_ = false;

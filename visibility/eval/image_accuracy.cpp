@@ -4,23 +4,6 @@
 
 namespace pvs {
 
-FaceRegions build_face_regions(const Zone& zone)
-{
-    FaceRegions out;
-    const size_t faces = zone.mesh.faces.size();
-    out.offsets.assign(faces + 1, 0);
-    for (uint32_t f : zone.region_faces)
-        ++out.offsets[f + 1];
-    for (size_t f = 0; f < faces; ++f)
-        out.offsets[f + 1] += out.offsets[f];
-    out.regions.resize(zone.region_faces.size());
-    std::vector<uint32_t> cursor(out.offsets.begin(), out.offsets.end() - 1);
-    for (uint32_t r = 0; r < zone.region_count(); ++r)
-        for (uint32_t f : zone.faces_of_region(r))
-            out.regions[cursor[f]++] = r; // regions ascending within each face, as r ascends
-    return out;
-}
-
 ImageAccuracy measure_image_accuracy(const Zone& zone, const FaceRegions& face_regions,
                                      std::span<const int32_t> face_ids, std::span<const uint32_t> drawn_regions,
                                      std::span<const int32_t> behind_translucent)

@@ -10,6 +10,7 @@
 // Pure computation on flat data: the renderer that makes the ID buffer lives in ui/.
 #pragma once
 
+#include "visibility/face_regions.h"
 #include "visibility/zone.h"
 
 #include <cstdint>
@@ -17,18 +18,6 @@
 #include <vector>
 
 namespace pvs {
-
-// Face -> the regions listing it, as compressed rows (the inverse of Zone::faces_of_region).
-struct FaceRegions {
-    std::vector<uint32_t> offsets; // faces + 1
-    std::vector<uint32_t> regions;
-
-    std::span<const uint32_t> of(uint32_t face) const
-    {
-        return std::span<const uint32_t>(regions).subspan(offsets[face], offsets[face + 1] - offsets[face]);
-    }
-};
-FaceRegions build_face_regions(const Zone& zone);
 
 struct ImageAccuracy {
     uint64_t pixels = 0;          // all pixels

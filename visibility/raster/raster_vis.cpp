@@ -3,7 +3,7 @@
 #include "visibility/raster/ray_cube.h"
 
 #include "visibility/bit_row.h"
-#include "visibility/eval/image_accuracy.h"
+#include "visibility/face_regions.h"
 #include "visibility/worker_pool.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/region_sampler.h"

@@ -1,7 +1,7 @@
 #include "visibility/reference/mesh_reference.h"
 
 #include "visibility/bit_row.h"
-#include "visibility/eval/image_accuracy.h"
+#include "visibility/face_regions.h"
 #include "visibility/worker_pool.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/sample_sequence.h"

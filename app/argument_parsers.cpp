@@ -1,7 +1,4 @@
-#include "app/arguments.h"
-
-#include "visibility/file_error.h"
-#include "wld/common/read_file.h"
+#include "app/argument_parsers.h"
 
 #include <sstream>
 
@@ -62,26 +59,9 @@ std::vector<std::string> split_comma_list(const std::string& text)
     return items;
 }
 
-void write_text_file(const std::string& path, const std::string& text)
-{
-    write_whole_file(path, std::vector<uint8_t>(text.begin(), text.end()));
-}
-
 SkyPortals sky_mode_from_name(const std::string& name)
 {
     return name == "all" ? SkyPortals::All : name == "none" ? SkyPortals::None : SkyPortals::SkyToSky;
-}
-
-int run_reporting_errors(const std::string& input, std::FILE* err, const std::function<int()>& body)
-{
-    try {
-        return body();
-    } catch (const FileError& e) {
-        std::fprintf(err, "pvscope: error: %s\n", e.what());
-    } catch (const std::exception& e) { // a zone without a tree, a result that cannot be written
-        std::fprintf(err, "pvscope: error: %s: %s\n", input.c_str(), e.what());
-    }
-    return kExitFileError;
 }
 
 } // namespace pvs::app
