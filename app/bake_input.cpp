@@ -25,22 +25,22 @@ namespace pvs::app {
 // A Quake map's name says its variant (BSP 29, BSP2, 2PSB), as `info` does.
 std::string format_name(const BakeInput& in)
 {
-    const InputFormat f = in.format;
-    if (f == InputFormat::QuakeBsp)
+    const ZoneFormat f = in.format;
+    if (f == ZoneFormat::QuakeBsp)
         return in.zone.source.version == "29" || in.zone.source.version.empty() ? "Quake BSP 29"
                                                                                  : "Quake " + in.zone.source.version;
-    return f == InputFormat::Quake2Bsp ? "Quake 2 BSP (IBSP 38)"
-           : f == InputFormat::EqS3d     ? "EverQuest S3D"
-           : f == InputFormat::DoomWad ? "Doom WAD + GL nodes"
+    return f == ZoneFormat::Quake2Bsp ? "Quake 2 BSP (IBSP 38)"
+           : f == ZoneFormat::EqS3d     ? "EverQuest S3D"
+           : f == ZoneFormat::DoomWad ? "Doom WAD + GL nodes"
                                        : "OBJ + .hepvs";
 }
 
 std::string format_extension(const BakeInput& in)
 {
-    if (in.format == InputFormat::DoomWad)
+    if (in.format == ZoneFormat::DoomWad)
         return lowercase_extension(in.doom_source.gl_path);
-    return in.format == InputFormat::QuakeBsp || in.format == InputFormat::Quake2Bsp ? ".bsp"
-           : in.format == InputFormat::EqS3d                                           ? ".s3d"
+    return in.format == ZoneFormat::QuakeBsp || in.format == ZoneFormat::Quake2Bsp ? ".bsp"
+           : in.format == ZoneFormat::EqS3d                                           ? ".s3d"
                                                                                        : ".hepvs";
 }
 
@@ -60,7 +60,7 @@ BakeInput load_obj_input(const BakeOptions& o)
     ZoneLoadOptions load;
     load.hepvs = o.hepvs;
     load.grid_size = o.grid_size;
-    BakeInput in(InputFormat::ObjHepvs, load_zone(o.input, load));
+    BakeInput in(ZoneFormat::ObjHepvs, load_zone(o.input, load));
     if (!in.zone.view_grid || o.cell > 0.0f) {
         const float cell = o.cell > 0.0f ? o.cell : kConvertHepvsCell;
         const std::optional<ViewGrid> grid = grid_over_points(in.zone.mesh.positions, cell, o.grid_size);
@@ -76,7 +76,7 @@ BakeInput load_obj_input(const BakeOptions& o)
 BakeInput load_doom_input(const BakeOptions& o, std::FILE* err)
 {
     const doom::DoomMap map = doom::open_doom_map(o.input, o.map, o.gwa).map;
-    BakeInput in(InputFormat::DoomWad, doom::build_doom_zone(map, nullptr));
+    BakeInput in(ZoneFormat::DoomWad, doom::build_doom_zone(map, nullptr));
     in.doom_source = map.source;
     for (const doom::GlSubsector& ss : map.subsectors)
         in.sector_of_subsector.push_back(ss.sector);
@@ -98,19 +98,16 @@ BakeInput load_doom_input(const BakeOptions& o, std::FILE* err)
 BakeInput load_bake_input(const BakeOptions& o, std::FILE* err)
 {
     const std::string& path = o.input;
-    const std::string ext = lowercase_extension(path);
-    if (ext == ".obj" || ext == ".hepvs")
-        return load_obj_input(o);
-    if (doom::file_looks_like_wad(path) || ext == ".gwa")
-        return load_doom_input(o, err);
+    if (const std::optional<ZoneFormat> named = zone_format_from_name(path))
+        return *named == ZoneFormat::DoomWad ? load_doom_input(o, err) : load_obj_input(o);
     // The file's bytes are not kept: the writer reads the file again (pvs_writeback.h).
     const std::vector<uint8_t> bytes = read_whole_file(path);
-    if (quake::looks_like_bsp29(bytes))
-        return BakeInput(InputFormat::QuakeBsp, quake::load_bsp29(bytes, path));
-    if (quake2::looks_like_ibsp38(bytes))
-        return BakeInput(InputFormat::Quake2Bsp, quake2::load_ibsp38(bytes, path));
-    if (eq::looks_like_pfs(bytes))
-        return BakeInput(InputFormat::EqS3d, eq::load_eq_zone(bytes, path));
+    switch (const ZoneFormat format = zone_format_from_bytes(bytes)) {
+    case ZoneFormat::QuakeBsp: return BakeInput(format, quake::load_bsp29(bytes, path));
+    case ZoneFormat::Quake2Bsp: return BakeInput(format, quake2::load_ibsp38(bytes, path));
+    case ZoneFormat::EqS3d: return BakeInput(format, eq::load_eq_zone(bytes, path));
+    default: break;
+    }
     load_zone(path); // throws the loader's message for formats it recognises but cannot read
     throw FileError(path, 0, "bake writes Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, EverQuest S3D, Doom GL_PVS and "
                              "OBJ + .hepvs only");
@@ -124,7 +121,7 @@ BakeInput load_bake_input(const BakeOptions& o, std::FILE* err)
 // A Doom map keeps its sectors (its writer needs them; they are small).
 void drop_drawing(BakeInput& in)
 {
-    if (in.format != InputFormat::QuakeBsp && in.format != InputFormat::Quake2Bsp && in.format != InputFormat::EqS3d)
+    if (in.format != ZoneFormat::QuakeBsp && in.format != ZoneFormat::Quake2Bsp && in.format != ZoneFormat::EqS3d)
         return;
     in.zone.mesh = Mesh{};
     for (Material& material : in.zone.materials)
@@ -156,7 +153,7 @@ quake::PrtFile load_prt_for_zone(const std::string& prt_path, const BakeInput& i
 {
     const std::string& zone_path = in.zone.source.path;
     quake::PrtFile prt = quake::load_prt(prt_path);
-    if (in.format == InputFormat::Quake2Bsp && !prt.has_clusters()) {
+    if (in.format == ZoneFormat::Quake2Bsp && !prt.has_clusters()) {
         const quake2::RegionClusterMap map = quake2::region_clusters(read_whole_file(zone_path), zone_path, in.zone);
         if (prt.leaf_count == map.clusters)
             return as_quake2_cluster_portals(std::move(prt), map, in.zone);

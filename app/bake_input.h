@@ -8,6 +8,7 @@
 #include "visibility/methods/portal_input.h"
 #include "visibility/zone.h"
 #include "wld/doom/doom_map.h"
+#include "wld/zone_file.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -16,10 +17,8 @@
 
 namespace pvs::app {
 
-enum class InputFormat { QuakeBsp, Quake2Bsp, EqS3d, ObjHepvs, DoomWad };
-
 struct BakeInput {
-    InputFormat format;
+    ZoneFormat format; // as load_zone tells it (zone_file.h)
     Zone zone;
     // Doom: where the map and its GL group are, and each subsector's sector (for REJECT).
     doom::MapSource doom_source;
@@ -28,7 +27,7 @@ struct BakeInput {
 
     bool drawing_dropped = false; // mesh and pixels freed for the bake (drop_drawing)
 
-    BakeInput(InputFormat f, Zone z) : format(f), zone(std::move(z)) {}
+    BakeInput(ZoneFormat f, Zone z) : format(f), zone(std::move(z)) {}
 };
 
 // Reads options.input (a Doom map: options.map, options.gwa; an OBJ level: its grid options).

@@ -46,13 +46,13 @@ void write_doom_output(const BakeOptions& o, const BakeInput& in, const Pvs& pvs
 
 std::vector<ReportField> write_bake_output(const BakeOptions& o, const BakeInput& in, const Pvs& pvs, std::FILE* err)
 {
-    if (in.format == InputFormat::DoomWad) {
+    if (in.format == ZoneFormat::DoomWad) {
         write_doom_output(o, in, pvs, err);
         return {};
     }
     // An S3D is written again from the whole zone: read it again if the bake let its drawing go.
     std::optional<Zone> reloaded;
-    if (in.format == InputFormat::EqS3d && in.drawing_dropped) {
+    if (in.format == ZoneFormat::EqS3d && in.drawing_dropped) {
         reloaded = eq::load_eq_zone(read_whole_file(o.input), o.input);
         if (reloaded->region_count() != in.zone.region_count())
             throw FileError(o.input, 0, "changed during the bake: " + std::to_string(reloaded->region_count()) +

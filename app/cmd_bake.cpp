@@ -29,11 +29,11 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 // The argument errors that need the input's format; empty when there are none.
 std::string check_against_input(const BakeOptions& o, const BakeInput& in)
 {
-    if (in.format == InputFormat::ObjHepvs && o.method != "raster" && o.method != "reference")
+    if (in.format == ZoneFormat::ObjHepvs && o.method != "raster" && o.method != "reference")
         return "'" + o.input + "' is an OBJ level: " + o.method +
                " needs a BSP tree, which it has not; bake it with --method raster (or reference: sight lines "
                "against the mesh)";
-    if (in.format != InputFormat::DoomWad && (o.in_place || o.reject || o.heights || !o.map.empty()))
+    if (in.format != ZoneFormat::DoomWad && (o.in_place || o.reject || o.heights || !o.map.empty()))
         return "--in-place, --reject, --heights and --map are for Doom WADs";
     if (o.reject && !o.in_place && in.doom_source.gl_path != in.doom_source.wad_path)
         return "--reject: REJECT lives in " + in.doom_source.wad_path + " but the GL nodes (and -o) are in " +
@@ -43,7 +43,7 @@ std::string check_against_input(const BakeOptions& o, const BakeInput& in)
                " format and bake writes its PVS in the same format, so the output must end in " +
                format_extension(in) + ", not '" + o.output + "' (to change the format, run `pvscope convert` on the "
                "result)";
-    if (in.format == InputFormat::DoomWad && (!o.prt_in.empty() || !o.prt_out.empty()))
+    if (in.format == ZoneFormat::DoomWad && (!o.prt_in.empty() || !o.prt_out.empty()))
         return "--prt / --write-prt: a Doom map's portals are its GL nodes' segs, not a portal file";
     return {};
 }
@@ -107,7 +107,7 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
     if (!method.reads_drawing)
         drop_drawing(in);
     MethodSettings settings = bake_method_settings(o);
-    const bool quake = in.format == InputFormat::QuakeBsp || in.format == InputFormat::Quake2Bsp;
+    const bool quake = in.format == ZoneFormat::QuakeBsp || in.format == ZoneFormat::Quake2Bsp;
     settings.box_clusters = o.clusters == "auto" && !quake;
     if (o.clusters == "auto" && quake && o.prt_in.empty())
         std::fprintf(err, "note: --clusters auto: a Quake map is baked per leaf (its PVS is per leaf)\n");

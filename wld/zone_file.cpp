@@ -95,31 +95,54 @@ std::string ibsp_not_supported(std::span<const uint8_t> bytes)
 
 } // namespace
 
+std::optional<ZoneFormat> zone_format_from_name(const std::string& path)
+{
+    if (has_extension(path, ".hepvs") || is_obj_path(path))
+        return ZoneFormat::ObjHepvs;
+    if (doom::file_looks_like_wad(path)) // a Doom WAD or a .gwa, read with its sibling
+        return ZoneFormat::DoomWad;
+    return std::nullopt;
+}
+
+ZoneFormat zone_format_from_bytes(std::span<const uint8_t> bytes)
+{
+    if (quake::looks_like_bsp29(bytes))
+        return ZoneFormat::QuakeBsp;
+    if (quake2::looks_like_ibsp38(bytes))
+        return ZoneFormat::Quake2Bsp;
+    if (eq::looks_like_pfs(bytes))
+        return ZoneFormat::EqS3d;
+    return ZoneFormat::Unknown;
+}
+
 Zone load_zone(const std::string& path) { return load_zone(path, ZoneLoadOptions{}); }
 
 Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
 {
-    if (has_extension(path, ".hepvs")) {
+    if (const std::optional<ZoneFormat> named = zone_format_from_name(path)) {
+        if (*named == ZoneFormat::DoomWad)
+            return doom::load_doom_zone(path, options.map, options.gwa);
+        if (!has_extension(path, ".hepvs"))
+            return load_obj_zone(path, options.hepvs, options);
         const std::string obj = options.obj.empty() ? sibling(path, ".obj") : options.obj;
         if (obj.empty())
             throw FileError(path, 0, "a .hepvs is opened with its OBJ: none of the same name beside it (pass --obj)");
         return load_obj_zone(obj, path, options);
     }
-    if (is_obj_path(path))
-        return load_obj_zone(path, options.hepvs, options);
-    if (doom::file_looks_like_wad(path)) // a Doom WAD or a .gwa, read with its sibling
-        return doom::load_doom_zone(path, options.map, options.gwa);
     const std::vector<uint8_t> bytes = read_whole_file(path);
     if (!options.map.empty() || !options.gwa.empty()) // not silently ignored
         throw FileError(path, 0, std::string(options.map.empty() ? "--gwa" : "--map") +
                                      " names a Doom map's part, and this is not a Doom WAD");
-    if (quake::looks_like_bsp29(bytes)) {
+    switch (zone_format_from_bytes(bytes)) {
+    case ZoneFormat::QuakeBsp: {
         Zone zone = quake::load_bsp29(bytes, path);
         attach_sibling_prt(zone, path);
         return zone;
     }
-    if (quake2::looks_like_ibsp38(bytes))
-        return quake2::load_ibsp38(bytes, path);
+    case ZoneFormat::Quake2Bsp: return quake2::load_ibsp38(bytes, path);
+    case ZoneFormat::EqS3d: return eq::load_eq_zone(bytes, path);
+    default: break;
+    }
     if (bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "IBSP"))
         throw FileError(path, 0, ibsp_not_supported(bytes));
     if (bytes.size() >= 4 && (std::equal(bytes.begin(), bytes.begin() + 4, "BSP2") ||
@@ -127,8 +150,6 @@ Zone load_zone(const std::string& path, const ZoneLoadOptions& options)
         throw FileError(path, 0, "a BSP2 / 2PSB file too short for its lump directory");
     if (bytes.size() >= 4 && bytes[0] == 30 && bytes[1] == 0 && bytes[2] == 0 && bytes[3] == 0)
         throw FileError(path, 0, "Half-Life BSP 30 is not supported");
-    if (eq::looks_like_pfs(bytes))
-        return eq::load_eq_zone(bytes, path);
     throw FileError(path, 0, "unknown file format (supported: Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, EverQuest S3D, Doom WAD with GL "
                              "nodes, Wavefront .obj with HateEngine .hepvs)");
 }

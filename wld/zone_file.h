@@ -10,9 +10,22 @@
 
 #include "visibility/zone.h"
 
+#include <cstdint>
+#include <optional>
+#include <span>
 #include <string>
 
 namespace pvs {
+
+// The formats load_zone opens, as it tells them apart (the one place that does).
+enum class ZoneFormat { QuakeBsp, Quake2Bsp, EqS3d, ObjHepvs, DoomWad, Unknown };
+
+// The formats told without reading the whole file: an OBJ or a .hepvs by its extension, a Doom
+// WAD or .gwa by its magic (the file's first bytes). nullopt for the others:
+// zone_format_from_bytes tells them from their bytes.
+std::optional<ZoneFormat> zone_format_from_name(const std::string& path);
+// Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, an EverQuest PFS archive (.s3d), else Unknown.
+ZoneFormat zone_format_from_bytes(std::span<const uint8_t> bytes);
 
 struct ZoneLoadOptions {
     std::string obj;   // the OBJ of a .hepvs (default: the .obj of the same name beside it)

@@ -1,5 +1,7 @@
 #include "ui/gui/pvs_rows.h"
 
+#include "visibility/eval/pvs_gap.h"
+
 #include <algorithm>
 #include <bit>
 #include <iterator>
@@ -63,24 +65,10 @@ RegionDiff diff_regions(const std::vector<uint32_t>& a, const std::vector<uint32
 
 PvsDiffCounts diff_pvs(const Pvs& a, const Pvs& b)
 {
-    PvsDiffCounts counts;
-    if (a.region_count() != b.region_count() || a.words_per_row() != b.words_per_row())
-        return counts;
-    std::vector<uint64_t> row_a(a.words_per_row()), row_b(b.words_per_row());
-    for (uint32_t r = 0; r < a.region_count(); ++r) {
-        std::fill(row_a.begin(), row_a.end(), 0);
-        std::fill(row_b.begin(), row_b.end(), 0);
-        a.decode_row(r, row_a);
-        b.decode_row(r, row_b);
-        for (size_t w = 0; w < row_a.size(); ++w) {
-            // Bits past the last region (a missing row decodes as all ones) are not regions.
-            const size_t first = w * 64, end = std::min<size_t>(first + 64, a.region_count());
-            const uint64_t valid = end - first == 64 ? ~uint64_t(0) : (uint64_t(1) << (end - first)) - 1;
-            counts.only_a += uint64_t(std::popcount(row_a[w] & ~row_b[w] & valid));
-            counts.only_b += uint64_t(std::popcount(row_b[w] & ~row_a[w] & valid));
-        }
-    }
-    return counts;
+    if (a.region_count() != b.region_count() || a.row_count() != b.row_count())
+        return {};
+    const PvsGap gap = pvs_gap(&a, b); // b the reference: a's excess is only in a
+    return {gap.excess_bits, gap.missing_bits};
 }
 
 } // namespace pvs::gui

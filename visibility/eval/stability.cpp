@@ -2,40 +2,12 @@
 
 #include "visibility/eval/pvs_gap.h"
 
-#include <bit>
 #include <chrono>
 #include <optional>
 #include <stdexcept>
 #include <vector>
 
 namespace pvs {
-
-namespace {
-
-struct RowDiff {
-    uint64_t gained = 0, lost = 0;
-    uint32_t rows = 0;
-};
-
-RowDiff row_diff(const Pvs& before, const Pvs& after)
-{
-    RowDiff diff;
-    std::vector<uint64_t> a(before.words_per_row()), b(after.words_per_row());
-    for (uint32_t r = 0; r < before.region_count(); ++r) {
-        before.decode_row(r, a);
-        after.decode_row(r, b);
-        uint64_t row_changes = 0;
-        for (size_t w = 0; w < a.size(); ++w) {
-            diff.gained += uint64_t(std::popcount(b[w] & ~a[w]));
-            diff.lost += uint64_t(std::popcount(a[w] & ~b[w]));
-            row_changes |= a[w] ^ b[w];
-        }
-        diff.rows += row_changes ? 1 : 0;
-    }
-    return diff;
-}
-
-} // namespace
 
 StabilityResult run_stability(const Zone& zone, const StabilityOptions& options)
 {
@@ -90,10 +62,10 @@ StabilityResult run_stability(const Zone& zone, const StabilityOptions& options)
             row.transform = t.name;
             row.exact = t.exact;
             row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const RowDiff diff = row_diff(*base, *moved);
-            row.gained_bits = diff.gained;
-            row.lost_bits = diff.lost;
-            row.changed_rows = diff.rows;
+            const PvsGap diff = pvs_gap(&*moved, *base); // excess: gained; missing: lost
+            row.gained_bits = diff.excess_bits;
+            row.lost_bits = diff.missing_bits;
+            row.changed_rows = diff.rows_differing;
             row.missing_bits = pvs_gap(&*moved, *reference).missing_bits;
             result.rows.push_back(std::move(row));
         }
