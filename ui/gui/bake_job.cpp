@@ -25,35 +25,52 @@ bool BakeJob::start(const Zone& zone, const BakeRequest& request)
     request_ = request;
     return job_.start(
         [this, &zone, request](JobControl& control) {
-            Output out;
-            VisParams params;
-            params.method = request.method;
-            params.level = request.level;
-            params.threads = request.threads;
-            params.progress = [this, &control](double fraction) {
+            const VisMethod& method =
+                *find_vis_method(request.method == VisParams::Method::Fast ? "portal-fast" : "portal-full");
+            MethodSettings settings;
+            settings.level = request.level;
+            settings.threads = request.threads;
+            settings.progress = [this, &control](double fraction) {
                 control.set_progress(fraction);
                 if (on_progress)
                     on_progress(fraction);
                 return !control.cancel_requested();
             };
+            // A map extruded from 2-D bakes on its column portals, never on a file's.
+            std::optional<PortalInput> own;
+            if (zone.portals && !zone.tree.has_height_nodes()) {
+                own.emplace();
+                own->portals = *zone.portals;
+                own->source = "the zone's portal file";
+                settings.portals = &*own;
+            }
+            Output out;
             if (!control.cancel_requested())
-                out.pvs = bake_zone_portal_vis(zone, params, false, &out.report, &out.portals);
+                out.run = method.run(zone, settings);
+            else
+                out.run.cancelled = true;
             return out;
         },
-        [](const Output& out) { return out.pvs && !out.report.cancelled; });
+        [](const Output& out) { return out.run.pvs && !out.run.cancelled; });
+}
+
+size_t BakeJob::portal_count() const
+{
+    const ReportField* portals = find_field(output().run.fields, "portals");
+    return portals ? size_t(std::get<uint64_t>(portals->value)) : 0;
 }
 
 const std::optional<Pvs>& BakeJob::result() const
 {
     static const std::optional<Pvs> kNone;
-    return job_.status() == JobStatus::Done ? output().pvs : kNone;
+    return job_.status() == JobStatus::Done ? output().run.pvs : kNone;
 }
 
 std::optional<Pvs> BakeJob::take_result()
 {
     if (job_.status() != JobStatus::Done || !job_.output())
         return std::nullopt;
-    return std::exchange(job_.output()->pvs, std::nullopt);
+    return std::exchange(job_.output()->run.pvs, std::nullopt);
 }
 
 const BakeJob::Output& BakeJob::output() const

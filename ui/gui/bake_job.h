@@ -1,14 +1,16 @@
-// A PVS bake on a background thread, for the inspector's Bake panel: the zone's portals (its
-// own, else build_zone_portals, visibility/portal/portalize.h) through bake_portal_vis
-// (visibility/portal/portal_vis.h), as a BackgroundJob (background_job.h: its states, progress,
-// cancel and lifetime rules). Done when the bake ran to the end: result() holds the PVS; a
-// cancelled bake's PVS is only conservative and is not offered, but its report() is kept.
+// A PVS bake on a background thread, for the inspector's Bake panel: the registry's portal-fast
+// or portal-full (visibility/methods/vis_method.h), on the zone's own portals when it carries
+// them (a Quake map's .prt beside it), else on the portals the method builds from the tree, as a
+// BackgroundJob (background_job.h: its states, progress, cancel and lifetime rules). Done when
+// the bake ran to the end: result() holds the PVS; a cancelled bake's PVS is only conservative
+// and is not offered, but its report() (the method's run: summary, fields, cancelled) is kept.
 //
 // on_progress, when set before start(), is called on the worker thread with each progress
 // fraction after it is published (tests use it to cancel at a known point).
 #pragma once
 
 #include "ui/gui/background_job.h"
+#include "visibility/methods/vis_method.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/pvs.h"
 #include "visibility/zone.h"
@@ -40,18 +42,16 @@ public:
     // The baked PVS (Done only); take_result moves it out.
     const std::optional<Pvs>& result() const;
     std::optional<Pvs> take_result();
-    const VisReport& report() const { return output().report; }
+    const MethodRun& report() const { return output().run; }
     const BakeRequest& request() const { return request_; }
-    size_t portal_count() const { return output().portals; }
+    size_t portal_count() const;
     const std::string& error() const { return job_.error(); }
 
     std::function<void(double fraction)> on_progress;
 
 private:
     struct Output {
-        std::optional<Pvs> pvs;
-        VisReport report;
-        size_t portals = 0;
+        MethodRun run; // run.pvs: the baked PVS
     };
     const Output& output() const;
 

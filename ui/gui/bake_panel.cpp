@@ -57,9 +57,7 @@ void draw_outcome(const InspectorState& state)
         ImGui::TextDisabled("cancelled: nothing kept");
     if (!state.baked_pvs())
         return;
-    const VisReport& r = state.baked_report();
-    ImGui::Text("baked: %zu portals, %.2f s on %u threads, mean %.1f visible", r.portals, r.seconds, r.threads,
-                r.mean_visible);
+    ImGui::TextWrapped("baked: %s", state.baked_summary().c_str());
 }
 
 void update_diff(const InspectorState& state, BakePanel& panel, int32_t region)

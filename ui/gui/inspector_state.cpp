@@ -130,7 +130,7 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     baked_pvs_.reset();
     editor_.reset();
     edited_pvs_.reset();
-    baked_report_ = {};
+    baked_summary_.clear();
     node_polygons_.reset();
     built_portals_.reset();
     selected_node = -1;

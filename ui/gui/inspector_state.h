@@ -246,7 +246,7 @@ public:
     // own format, through the writers `bake` uses (wld/pvs_writeback.h). False with error() set
     // when it cannot (a generated zone, no PVS, a write error); `message` says what was written.
     bool save_pvs(const std::string& out_path, std::string& message);
-    const VisReport& baked_report() const { return baked_report_; }
+    const std::string& baked_summary() const { return baked_summary_; } // the bake's one line
 
     // ---- Stability cases (the Stability panel) -----------------------------------------------
     // Opens crafted case `name` (wld/gen/stability_cases.h) with its camera, bakes `method` of the
@@ -377,7 +377,7 @@ private:
     std::string baked_label_; // what the "baked" source holds: "portal-full level=4 ...", a compare row
     CompareJob compare_;
     std::optional<ui::PeakMemoryProbe> memory_probe_;
-    VisReport baked_report_;
+    std::string baked_summary_;
     uint64_t pvs_generation_ = 0;
     std::optional<PairExplanation> explanation_;
     ui::PairOverlay pair_overlay_; // explanation_ as the overlay draws it

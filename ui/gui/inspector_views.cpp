@@ -300,7 +300,7 @@ void InspectorState::poll_bake()
         return;
     baked_pvs_ = bake_.take_result();
     baked_label_ = bake_.request().method == VisParams::Method::Fast ? "portal-fast" : "portal-full";
-    baked_report_ = bake_.report();
+    baked_summary_ = bake_.report().summary;
     ++pvs_generation_;
     if (pvs_source_ == PvsSource::Baked)
         rebuild_culler(); // it pointed at the previous bake

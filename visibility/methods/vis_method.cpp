@@ -333,20 +333,6 @@ const char* bound_name(Bound bound)
     return "unknown";
 }
 
-Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights, VisReport* report,
-                         size_t* portal_count)
-{
-    MethodSettings s;
-    s.heights = heights;
-    const bool own = zone.portals && !zone.tree.has_height_nodes();
-    const PortalSet built = own ? PortalSet{} : method_portals(zone, s);
-    const PortalSet& set = own ? *zone.portals : built;
-    if (portal_count)
-        *portal_count = set.portals.size();
-    return zone_uses_2d_vis(zone, s) ? bake_portal_vis_2d(set, uint32_t(zone.region_count()), params, report)
-                                      : bake_portal_vis(set, uint32_t(zone.region_count()), params, report);
-}
-
 std::span<const VisMethod> vis_methods() { return kMethods; }
 
 PortalSet method_portals(const Zone& zone, const MethodSettings& settings)

@@ -108,12 +108,6 @@ struct VisMethod {
 
 std::span<const VisMethod> vis_methods();
 
-// portal-fast / portal-full as the registry runs them, for callers with their own VisParams
-// (the inspector's Bake panel): the zone's own portals when it carries them, else those of
-// zone_portal_input (no clusters). `portal_count`,
-// when given, receives the number of portals used.
-Pvs bake_zone_portal_vis(const Zone& zone, const VisParams& params, bool heights, VisReport* report,
-                         size_t* portal_count = nullptr);
 // The portals portal-fast and portal-full bake on when none are given (zone_portal_input's,
 // without clusters), and whether they go to the 2-D baker (bake_portal_vis_2d) rather than
 // bake_portal_vis. Throw as those methods do (no tree).
