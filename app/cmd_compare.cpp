@@ -11,7 +11,7 @@
 #include "app/zone_load_args.h"
 #include "ui/chart/chart_file.h"
 #include "ui/chart/compare_points.h"
-#include "ui/method_compare.h"
+#include "render/method_compare.h"
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
 #include "wld/zone_file.h"

@@ -4,11 +4,11 @@
 #include "app/progress_bar.h"
 #include "visibility/file_error.h"
 #include "wld/convert.h"
-#include "wld/gen/generate_outdoor_zone.h"
-#include "wld/gen/terrain_level.h"
-#include "wld/gen/generate_zone.h"
-#include "wld/gen/stability_cases.h"
-#include "wld/gen/voxel_level.h"
+#include "gen/generate_outdoor_zone.h"
+#include "gen/terrain_level.h"
+#include "gen/generate_zone.h"
+#include "gen/stability_cases.h"
+#include "gen/voxel_level.h"
 
 #include <chrono>
 #include <cstdio>

@@ -10,7 +10,7 @@
 #pragma once
 
 #include "app/zone_load_args.h"
-#include "ui/zone_overlays.h"
+#include "render/zone_overlays.h"
 
 #include <CLI/App.hpp>
 

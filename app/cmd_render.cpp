@@ -6,8 +6,8 @@
 #include "app/zone_load_args.h"
 #include "app/error_path.h"
 
-#include "ui/culled_frame.h"
-#include "ui/software_renderer.h"
+#include "render/culled_frame.h"
+#include "render/software_renderer.h"
 #include "visibility/culler.h"
 #include "visibility/file_error.h"
 #include "wld/zone_file.h"

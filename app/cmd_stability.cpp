@@ -11,8 +11,8 @@
 #include "visibility/eval/stability.h"
 #include "visibility/file_error.h"
 #include "wld/common/read_file.h"
-#include "wld/gen/case_table.h"
-#include "wld/gen/stability_cases.h"
+#include "gen/case_table.h"
+#include "gen/stability_cases.h"
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>

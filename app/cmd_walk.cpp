@@ -5,7 +5,7 @@
 #include "app/pvs_source.h"
 #include "app/zone_load_args.h"
 #include "app/error_path.h"
-#include "ui/accuracy_walk.h"
+#include "render/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/eval/sight_check.h"
 #include "visibility/eval/stale_region_cache.h"

@@ -15,7 +15,7 @@
 //    reset, rise_mib() is negative and the compare reports the bakers' own estimates.
 #pragma once
 
-#include "ui/method_compare.h"
+#include "render/method_compare.h"
 
 #include <cstddef>
 

@@ -9,7 +9,7 @@
 #include "visibility/pvs.h"
 #include "wld/convert.h"
 #include "wld/eq/eq_zone_reader.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -19,7 +19,7 @@
 #include "visibility/eval/camera_set.h"
 #include "visibility/math/frustum_boxes.h"
 #include "visibility/region_locator.h"
-#include "wld/gen/generate_outdoor_zone.h"
+#include "gen/generate_outdoor_zone.h"
 
 #include <benchmark/benchmark.h>
 

@@ -10,7 +10,7 @@
 #include "wld/common/read_file.h"
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/eq/eq_zone_writer.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/quake/bsp29_reader.h"
 
 #include <benchmark/benchmark.h>

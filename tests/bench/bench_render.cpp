@@ -4,7 +4,7 @@
 //
 //   build/tests/bench/bench_render --benchmark_min_time=2
 #include "tests/support/test_data.h"
-#include "ui/software_renderer.h"
+#include "render/software_renderer.h"
 #include "visibility/culler.h"
 #include "visibility/eval/camera_set.h"
 

@@ -31,7 +31,7 @@
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/zone_file.h"
 
 #include <benchmark/benchmark.h>

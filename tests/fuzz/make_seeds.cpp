@@ -28,7 +28,7 @@
 #include "wld/doom/wad_file.h"
 #include "wld/eq/eq_zone_writer.h"
 #include "wld/eq/pfs_archive.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/pvs_edit_list.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/prt_file.h"

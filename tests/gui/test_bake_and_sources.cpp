@@ -6,7 +6,7 @@
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/pvs_rows.h"
 #include "visibility/portal/portalize.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // the inspector's orbit, field of view and picked point.
 #include "ui/gui/camera_math.h"
 #include "ui/gui/inspector_state.h"
-#include "ui/overlay_fill.h"
+#include "render/overlay_fill.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // export and the frame-time ring.
 #include "tests/support/test_data.h"
 #include "ui/gui/inspector_state.h"
-#include "ui/software_renderer.h"
+#include "render/software_renderer.h"
 #include "visibility/culler.h"
 
 #include <gtest/gtest.h>

@@ -6,9 +6,9 @@
 // seen by a 90-degree camera covers exactly the middle half of a square picture, so a line
 // behind it is hidden exactly over that half (up to half a depth-test piece at each end).
 #include "ui/gui/inspector_state.h"
-#include "ui/overlay_lines.h"
-#include "ui/picture_occlusion.h"
-#include "ui/zone_overlays.h"
+#include "render/overlay_lines.h"
+#include "render/picture_occlusion.h"
+#include "render/zone_overlays.h"
 #include "visibility/portal/portalize.h"
 #include "visibility/reference/mesh_tracer.h"
 

@@ -4,8 +4,8 @@
 // classes, the legend following the toggles, and the painter's overlays in the inspector.
 #include "tests/support/test_data.h"
 #include "ui/gui/inspector_state.h"
-#include "ui/overlay_fill.h"
-#include "ui/zone_overlays.h"
+#include "render/overlay_fill.h"
+#include "render/zone_overlays.h"
 
 #include <gtest/gtest.h>
 

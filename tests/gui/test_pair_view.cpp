@@ -3,7 +3,7 @@
 // button stands at the sight line's eye looking at B.
 #include "tests/support/test_data.h"
 #include "ui/gui/inspector_state.h"
-#include "ui/zone_overlays.h"
+#include "render/zone_overlays.h"
 
 #include <gtest/gtest.h>
 

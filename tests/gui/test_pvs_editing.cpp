@@ -92,7 +92,7 @@ TEST_F(EditingInspector, RowFromPortalFastAndTheListRoundTrip)
 
 #include "tests/support/test_data.h"
 #include "visibility/file_error.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/pvs_writeback.h"
 #include "wld/zone_file.h"
 

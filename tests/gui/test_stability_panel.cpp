@@ -7,7 +7,7 @@
 #include <imgui_internal.h> // FindWindowByName
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/panels.h"
-#include "wld/gen/stability_cases.h"
+#include "gen/stability_cases.h"
 
 #include <gtest/gtest.h>
 

@@ -12,8 +12,8 @@
 //    pixels hits a face that was drawn, so none is popping. The test counts a pixel as popping
 //    only when the ray confirms it, and checks that unconfirmed pixels stay rare.
 #include "tests/support/test_data.h"
-#include "ui/accuracy_walk.h"
-#include "ui/software_renderer.h"
+#include "render/accuracy_walk.h"
+#include "render/software_renderer.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/eval/ray_pick.h"
 

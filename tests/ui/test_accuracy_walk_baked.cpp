@@ -6,7 +6,7 @@
 // with pvs+frustum against the exact ID buffer of the whole zone: no pixel may pop. The bake is
 // the thing under test; the ID buffer and the ray casts do not use it.
 #include "tests/support/test_data.h"
-#include "ui/accuracy_walk.h"
+#include "render/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/portal/portal_vis.h"
 #include "visibility/portal/portalize.h"

@@ -5,12 +5,12 @@
 // an exact ray confirms, and no more unconfirmed ones (cracks) than the leaf-level bake shows:
 // the grouping kept every region a real sight line reaches. The ID buffer and the ray casts do
 // not use the bake.
-#include "ui/accuracy_walk.h"
+#include "render/accuracy_walk.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/cluster_vis.h"
 #include "visibility/portal/portalize.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

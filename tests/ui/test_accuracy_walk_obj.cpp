@@ -6,8 +6,8 @@
 //  - with every row full, nothing pops;
 //  - every random camera stands inside one of the rooms, never in the rock between.
 #include "tests/support/obj_boxes.h"
-#include "ui/accuracy_walk.h"
-#include "ui/method_compare.h"
+#include "render/accuracy_walk.h"
+#include "render/method_compare.h"
 #include "visibility/eval/camera_set.h"
 #include "wld/obj/obj_reader.h"
 

@@ -16,7 +16,7 @@
 //   surface's triangles (or within kUnfacedMargin of them) is blocked by it, not unfaced.
 //   Glass: Open with a pane in region 0 (x = -10) in front of the camera. Translucent, it hides
 //   nothing: the far wall pops behind it as around it; opaque, only around it.
-#include "ui/accuracy_walk.h"
+#include "render/accuracy_walk.h"
 
 #include "tests/support/test_data.h"
 #include "visibility/eval/camera_set.h"

@@ -2,8 +2,8 @@
 // line joined where they overlap or touch, worked out by hand on small boxes; colours kept apart
 // and in first-added order; gaps, slanted segments, empty and non-finite input; and drawing the
 // joined lines sets the pixels drawing every box on its own sets.
-#include "ui/line_batch.h"
-#include "ui/overlay_fill.h"
+#include "render/line_batch.h"
+#include "render/overlay_fill.h"
 
 #include <gtest/gtest.h>
 

@@ -5,9 +5,9 @@
 #include "ui/chart/chart_file.h"
 #include "ui/chart/compare_points.h"
 #include "ui/chart/speed_accuracy_chart.h"
-#include "ui/method_compare.h"
+#include "render/method_compare.h"
 
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

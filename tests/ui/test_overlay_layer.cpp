@@ -1,8 +1,8 @@
 // Overlay layers (ui/overlay_layer.h): a mark drawn into a transparent layer and composited over
 // a picture gives the picture the mark would have given drawn on it, to the bit; overlapping
 // translucent marks to within 8-bit rounding; a layer of another size changes nothing.
-#include "ui/overlay_layer.h"
-#include "ui/overlay_lines.h"
+#include "render/overlay_layer.h"
+#include "render/overlay_lines.h"
 
 #include <gtest/gtest.h>
 

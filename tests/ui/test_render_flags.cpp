@@ -3,9 +3,9 @@
 // and a zone-line region, measured against the Textured picture of the same pixels; lines drawn
 // on blank images; and on e1m1, tinted pixels from inside the slime and the water, and the lock.
 #include "tests/support/test_data.h"
-#include "ui/overlay_lines.h"
-#include "ui/culled_frame.h"
-#include "ui/software_renderer.h"
+#include "render/overlay_lines.h"
+#include "render/culled_frame.h"
+#include "render/software_renderer.h"
 #include "visibility/culler.h"
 #include "visibility/region_lookup.h"
 

@@ -2,7 +2,7 @@
 // worked out by hand from a synthetic two-room zone, the region-colour picture against the ID
 // buffer on e1m1, and determinism.
 #include "tests/support/test_data.h"
-#include "ui/software_renderer.h"
+#include "render/software_renderer.h"
 #include "visibility/culler.h"
 
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 #include "visibility/bit_row.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "wld/eq/eq_zone_writer.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/zone_file.h"
 
 #include <cstdio>

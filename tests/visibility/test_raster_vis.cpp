@@ -19,7 +19,7 @@
 #include "visibility/raster/raster_vis.h"
 #include "visibility/raster/ray_cube.h"
 #include "visibility/reference/mesh_tracer.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/obj/obj_reader.h"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 #include "visibility/portal/box_clusters.h"
 #include "visibility/portal/portalize.h"
 #include "visibility/portal/region_clusters.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

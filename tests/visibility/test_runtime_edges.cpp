@@ -16,7 +16,7 @@
 #include "visibility/eval/stale_region_cache.h"
 #include "visibility/portal/portalize.h"
 #include "visibility/region_lookup.h"
-#include "wld/gen/stability_cases.h"
+#include "gen/stability_cases.h"
 
 #include <gtest/gtest.h>
 

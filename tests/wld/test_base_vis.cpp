@@ -14,7 +14,7 @@
 #include "tests/support/test_data.h"
 #include "visibility/bit_row.h"
 #include "visibility/portal/portalize.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "visibility/region_lookup.h"
 #include "wld/convert.h"
 #include "wld/eq/eq_zone_writer.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/obj/obj_writer.h"
 #include "wld/zone_file.h"
 

@@ -8,8 +8,8 @@
 #include "tests/support/work_baseline.h"
 #include "visibility/culler.h"
 #include "visibility/eval/camera_set.h"
-#include "wld/gen/generate_outdoor_zone.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_outdoor_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "visibility/culler.h"
 #include "visibility/eval/camera_set.h"
 #include "visibility/region_lookup.h"
-#include "wld/gen/generate_outdoor_zone.h"
+#include "gen/generate_outdoor_zone.h"
 #include "wld/zone_file.h"
 
 #include <glm/gtc/matrix_inverse.hpp>

@@ -6,7 +6,7 @@
 #include "wld/eq/eq_zone_reader.h"
 #include "wld/eq/eq_zone_writer.h"
 #include "wld/eq/pfs_archive.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 #include <squish.h>

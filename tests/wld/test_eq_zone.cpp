@@ -16,7 +16,7 @@
 #include "wld/eq/stb_image_io.h"
 #include "wld/eq/wld_mesh.h"
 #include "wld/eq/wld_file.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>

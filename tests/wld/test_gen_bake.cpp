@@ -7,8 +7,8 @@
 //  - the notes name the method; bake off gives no PVS;
 //  - the demo cache: made once then read back (the same rows), a corrupt file is made again,
 //    a cache directory that cannot be made still gives the zone.
-#include "wld/gen/demo_zone.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/demo_zone.h"
+#include "gen/generate_zone.h"
 
 #include "visibility/region_lookup.h"
 

@@ -4,8 +4,8 @@
 // every face lies on its region's boundary facing in, and the faces against solid cover exactly
 // the open/solid cell boundaries.
 #include "visibility/region_lookup.h"
-#include "wld/gen/generate_zone.h"
-#include "wld/gen/voxel_level.h"
+#include "gen/generate_zone.h"
+#include "gen/voxel_level.h"
 
 #include <gtest/gtest.h>
 

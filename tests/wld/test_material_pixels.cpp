@@ -3,7 +3,7 @@
 // textures from Quake maps and generated zones take one byte per texel.
 #include "tests/support/test_data.h"
 #include "visibility/zone.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 #include "visibility/reference/sample_sequence.h"
 #include "visibility/reference/line_witness.h"
 #include "visibility/reference/tree_trace.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

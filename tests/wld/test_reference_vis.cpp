@@ -13,7 +13,7 @@
 #include "visibility/portal/portalize.h"
 #include "visibility/reference/line_witness.h"
 #include "visibility/reference/tree_trace.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

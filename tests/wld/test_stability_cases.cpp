@@ -11,8 +11,8 @@
 //    and every portal method missed A <-> B there.
 #include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
-#include "wld/gen/case_table.h"
-#include "wld/gen/stability_cases.h"
+#include "gen/case_table.h"
+#include "gen/stability_cases.h"
 
 #include <gtest/gtest.h>
 

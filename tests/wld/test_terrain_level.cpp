@@ -3,8 +3,8 @@
 // the range the zone is meant for, terrain that really hides (checked by marching sight lines
 // through the grid, written here), overhangs, liquids and zone lines where they were placed, and
 // bad parameters refused.
-#include "wld/gen/generate_outdoor_zone.h"
-#include "wld/gen/terrain_level.h"
+#include "gen/generate_outdoor_zone.h"
+#include "gen/terrain_level.h"
 
 #include <gtest/gtest.h>
 

@@ -8,10 +8,10 @@
 #include "visibility/reference/reference_vis.h"
 #include "visibility/terrain/terrain_heightfield.h"
 #include "visibility/terrain/terrain_vis.h"
-#include "wld/gen/generate_outdoor_zone.h"
-#include "wld/gen/grid_axes.h"
-#include "wld/gen/grid_zone.h"
-#include "wld/gen/terrain_level.h"
+#include "gen/generate_outdoor_zone.h"
+#include "gen/grid_axes.h"
+#include "gen/grid_zone.h"
+#include "gen/terrain_level.h"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 
 #include "tests/support/test_data.h"
 #include "visibility/region_lookup.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 #include "wld/doom/doom_zone.h"
 #include "wld/doom/line_plane.h"
 #include "wld/doom/wad_file.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 #include "visibility/eval/stability.h"
 #include "visibility/portal/portalize.h"
 #include "visibility/region_lookup.h"
-#include "wld/gen/generate_zone.h"
+#include "gen/generate_zone.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include "ui/chart/canvas.h"
 #include "ui/chart/speed_accuracy_chart.h"
-#include "ui/software_renderer.h"
+#include "render/software_renderer.h"
 
 #include <functional>
 #include <string>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ui/chart/speed_accuracy_chart.h"
-#include "ui/method_compare.h"
+#include "render/method_compare.h"
 
 #include <vector>
 

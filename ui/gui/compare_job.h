@@ -4,7 +4,7 @@
 #pragma once
 
 #include "ui/gui/background_job.h"
-#include "ui/method_compare.h"
+#include "render/method_compare.h"
 
 #include <optional>
 #include <string>

@@ -7,8 +7,8 @@
 #pragma once
 
 #include "ui/gui/bake_job.h"
-#include "ui/method_compare.h"
-#include "ui/zone_overlays.h"
+#include "render/method_compare.h"
+#include "render/zone_overlays.h"
 #include "visibility/culler.h"
 
 #include <array>

@@ -4,7 +4,7 @@
 #include "visibility/area_flood.h"
 #include "visibility/math/frustum.h"
 #include "visibility/region_lookup.h"
-#include "wld/gen/demo_zone.h"
+#include "gen/demo_zone.h"
 #include "wld/zone_file.h"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 #include "ui/gui/camera_math.h"
 #include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
-#include "wld/gen/stability_cases.h"
+#include "gen/stability_cases.h"
 
 #include <algorithm>
 #include <chrono>

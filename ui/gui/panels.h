@@ -9,7 +9,7 @@
 #include "ui/gui/file_browser.h"
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/recent_files.h"
-#include "wld/gen/case_table.h"
+#include "gen/case_table.h"
 
 #include <imgui.h>
 
