@@ -28,11 +28,11 @@ std::string format_name(const BakeInput& in)
     const ZoneFormat f = in.format;
     if (f == ZoneFormat::QuakeBsp)
         return in.zone.source.version == "29" || in.zone.source.version.empty() ? "Quake BSP 29"
-                                                                                 : "Quake " + in.zone.source.version;
+                                                                                : "Quake " + in.zone.source.version;
     return f == ZoneFormat::Quake2Bsp ? "Quake 2 BSP (IBSP 38)"
-           : f == ZoneFormat::EqS3d     ? "EverQuest S3D"
+           : f == ZoneFormat::EqS3d   ? "EverQuest S3D"
            : f == ZoneFormat::DoomWad ? "Doom WAD + GL nodes"
-                                       : "OBJ + .hepvs";
+                                      : "OBJ + .hepvs";
 }
 
 std::string format_extension(const BakeInput& in)
@@ -40,8 +40,8 @@ std::string format_extension(const BakeInput& in)
     if (in.format == ZoneFormat::DoomWad)
         return lowercase_extension(in.doom_source.gl_path);
     return in.format == ZoneFormat::QuakeBsp || in.format == ZoneFormat::Quake2Bsp ? ".bsp"
-           : in.format == ZoneFormat::EqS3d                                           ? ".s3d"
-                                                                                       : ".hepvs";
+           : in.format == ZoneFormat::EqS3d                                        ? ".s3d"
+                                                                                   : ".hepvs";
 }
 
 std::string lowercase_extension(const std::string& path)
@@ -109,8 +109,9 @@ BakeInput load_bake_input(const BakeOptions& o, std::FILE* err)
     default: break;
     }
     load_zone(path); // throws the loader's message for formats it recognises but cannot read
-    throw FileError(path, 0, "bake writes Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, EverQuest S3D, Doom GL_PVS and "
-                             "OBJ + .hepvs only");
+    throw FileError(path, 0,
+                    "bake writes Quake BSP 29 / BSP2 / 2PSB, Quake 2 IBSP 38, EverQuest S3D, Doom GL_PVS and "
+                    "OBJ + .hepvs only");
 }
 
 // A portal bake reads the tree, the regions and their flags, never the faces. So a Quake map's
@@ -136,8 +137,7 @@ namespace {
 // A Quake 2 map's PRT1 from qbsp names the map's clusters, not its leaves (qbsp -q2bsp writes it
 // over them): read as a cluster portal file, each region in its leaf's cluster, so the bake is
 // the flow over the clusters that `pvscope vis` runs.
-quake::PrtFile as_quake2_cluster_portals(quake::PrtFile prt, const quake2::RegionClusterMap& map,
-                                         const Zone& zone)
+quake::PrtFile as_quake2_cluster_portals(quake::PrtFile prt, const quake2::RegionClusterMap& map, const Zone& zone)
 {
     prt.version = quake::PrtVersion::Prt2;
     prt.cluster_count = map.clusters;
@@ -158,11 +158,11 @@ quake::PrtFile load_prt_for_zone(const std::string& prt_path, const BakeInput& i
         if (prt.leaf_count == map.clusters)
             return as_quake2_cluster_portals(std::move(prt), map, in.zone);
         if (prt.leaf_count != in.zone.region_count())
-            throw FileError(prt_path, 0,
-                            "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path +
-                                " has " + std::to_string(map.clusters) + " clusters and " +
-                                std::to_string(in.zone.region_count()) +
-                                " regions (a Quake 2 portal file names one or the other: a portal file of another map?)");
+            throw FileError(
+                prt_path, 0,
+                "portal file names " + std::to_string(prt.leaf_count) + " leaves but " + zone_path + " has " +
+                    std::to_string(map.clusters) + " clusters and " + std::to_string(in.zone.region_count()) +
+                    " regions (a Quake 2 portal file names one or the other: a portal file of another map?)");
     }
     if (prt.leaf_count != in.zone.region_count())
         throw FileError(prt_path, 0,

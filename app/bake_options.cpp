@@ -41,7 +41,8 @@ std::string check_bake_options(const BakeOptions& o)
         return "--clusters must be none or auto, not '" + o.clusters + "'";
     if (!o.prt_out.empty() && o.prt_out == o.output)
         return "--write-prt and -o name the same file";
-    for (const auto& [option, file] : {std::pair{"-o", &o.output}, {"--report", &o.report}, {"--write-prt", &o.prt_out}})
+    for (const auto& [option, file] :
+         {std::pair{"-o", &o.output}, {"--report", &o.report}, {"--write-prt", &o.prt_out}})
         if (const std::string folder = missing_folder(*file); !folder.empty())
             return std::string(option) + " " + *file + ": no folder " + folder + " to write it in";
     std::error_code ec;

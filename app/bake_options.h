@@ -31,7 +31,7 @@ struct BakeOptions {
     uint32_t resolution = 64;
     uint32_t points = 16;
     float step = 0.0f;
-    std::string lattice = "open"; // grid cells: open (random points in open space), centred, hateengine
+    std::string lattice = "open";       // grid cells: open (random points in open space), centred, hateengine
     std::string raster_engine = "rays"; // rays (Embree packets) or rasteriser
     bool cull_back_faces = true;
     // OBJ levels: the view grid's cell in grid units (0: the .hepvs's grid, else 8) and the OBJ
@@ -51,7 +51,7 @@ struct BakeOptions {
     // file's levels are kept).
     bool ambient = true;
     quake::AmbientOptions ambient_classes; // which texture classes count (vis's -noambient* switches)
-    std::string phs_rule = "quake2"; // Quake 2 maps: the PHS written with the PVS, quake2 | ericw
+    std::string phs_rule = "quake2";       // Quake 2 maps: the PHS written with the PVS, quake2 | ericw
     // A PVS edit list (wld/pvs_edit_list.h) applied to the bake before it is written: hand fixes
     // that survive a re-vis.
     std::string apply_edits;

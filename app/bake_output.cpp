@@ -55,8 +55,9 @@ std::vector<ReportField> write_bake_output(const BakeOptions& o, const BakeInput
     if (in.format == ZoneFormat::EqS3d && in.drawing_dropped) {
         reloaded = eq::load_eq_zone(read_whole_file(o.input), o.input);
         if (reloaded->region_count() != in.zone.region_count())
-            throw FileError(o.input, 0, "changed during the bake: " + std::to_string(reloaded->region_count()) +
-                                            " regions now, " + std::to_string(in.zone.region_count()) + " when it was read");
+            throw FileError(o.input, 0,
+                            "changed during the bake: " + std::to_string(reloaded->region_count()) + " regions now, " +
+                                std::to_string(in.zone.region_count()) + " when it was read");
     }
     // The other formats through the writer the inspector's Save uses too.
     PvsWriteOptions write_options;

@@ -18,7 +18,8 @@ namespace pvs::app {
 // The PVS into options.output in the input's format (pvs_writeback.h; a Doom map: GL_PVS, and
 // REJECT with --reject). An S3D whose drawing was dropped is read again for the write. Returns
 // what the writer reports of the file (PvsWriteback::fields).
-std::vector<ReportField> write_bake_output(const BakeOptions& options, const BakeInput& in, const Pvs& pvs, std::FILE* err);
+std::vector<ReportField> write_bake_output(const BakeOptions& options, const BakeInput& in, const Pvs& pvs,
+                                           std::FILE* err);
 
 // --apply-edits: the list applied to the PVS in place, before anything is written or reported.
 // Returns the number of edits, 0 without a list.

@@ -1,9 +1,9 @@
 #include "app/cmd_bake.h"
 
-#include "app/error_path.h"
-#include "app/output_files.h"
 #include "app/bake_input.h"
 #include "app/bake_output.h"
+#include "app/error_path.h"
+#include "app/output_files.h"
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "report/bake_report_json.h"
@@ -40,8 +40,9 @@ std::string check_against_input(const BakeOptions& o, const BakeInput& in)
                in.doom_source.gl_path + "; use --in-place to write both";
     if (!o.in_place && lowercase_extension(o.output) != format_extension(in))
         return "'" + o.input + "' is in the " + format_name(in) +
-               " format and bake writes its PVS in the same format, so the output must end in " +
-               format_extension(in) + ", not '" + o.output + "' (to change the format, run `pvscope convert` on the "
+               " format and bake writes its PVS in the same format, so the output must end in " + format_extension(in) +
+               ", not '" + o.output +
+               "' (to change the format, run `pvscope convert` on the "
                "result)";
     if (in.format == ZoneFormat::DoomWad && (!o.prt_in.empty() || !o.prt_out.empty()))
         return "--prt / --write-prt: a Doom map's portals are its GL nodes' segs, not a portal file";
@@ -69,9 +70,9 @@ MethodRun run_method(const VisMethod& method, const Zone& zone, MethodSettings s
         char line[240];
         std::snprintf(line, sizeof line,
                       "reference: %8s lines and %6s eyes per region, %9s bits, +%s new (%.3f%%), %.1f s",
-                      std::to_string(round.samples_per_region).c_str(),
-                      std::to_string(round.eyes_per_region).c_str(), std::to_string(round.bits).c_str(),
-                      std::to_string(round.new_bits).c_str(), 100.0 * round.new_share(), round.seconds);
+                      std::to_string(round.samples_per_region).c_str(), std::to_string(round.eyes_per_region).c_str(),
+                      std::to_string(round.bits).c_str(), std::to_string(round.new_bits).c_str(),
+                      100.0 * round.new_share(), round.seconds);
         bar.note(line);
     };
     settings.progress = [&](double fraction) {
@@ -132,7 +133,8 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
     std::fprintf(err, "%s%s\n", run.summary.c_str(), header.edits_applied ? " (before the edits)" : "");
     if (!o.report.empty()) {
         header.peak_rss_bytes = peak_rss_bytes();
-        write_report(o.report, report::bake_report_json(header, run, pvs, in.zone.baked_pvs ? &*in.zone.baked_pvs : nullptr));
+        write_report(o.report,
+                     report::bake_report_json(header, run, pvs, in.zone.baked_pvs ? &*in.zone.baked_pvs : nullptr));
     }
     return 0;
 }

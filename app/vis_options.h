@@ -14,8 +14,7 @@ struct VisCommandOptions {
     unsigned threads = 0;
     bool fast = false;
     bool ambient_only = false;
-    bool noambient = false, noambientsky = false, noambientwater = false, noambientslime = false,
-         noambientlava = false;
+    bool noambient = false, noambientsky = false, noambientwater = false, noambientslime = false, noambientlava = false;
     bool nostate = false;
     double visdist = 0.0; // refused when set
     std::string report;

@@ -1,8 +1,8 @@
 #include "app/vis_quake2.h"
 
+#include "app/cmd_bake.h"
 #include "app/error_path.h"
 #include "app/output_files.h"
-#include "app/cmd_bake.h"
 #include "app/process_memory.h"
 #include "app/progress_bar.h"
 #include "report/pvs_diff_json.h"
@@ -36,17 +36,17 @@ nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map,
     const VisReport& v = r.report;
     const auto baked = [&](auto value) { return o.phs_only ? nlohmann::json(nullptr) : nlohmann::json(value); };
     nlohmann::json j = {{"input", map},
-            {"output", map},
-            {"format", "Quake 2 (IBSP 38)"},
-            {"method", o.phs_only ? "phs-only" : (o.fast ? "portal-fast" : o.method)},
-            {"level", baked(o.level)},
-            {"threads", baked(v.threads)},
-            {"portal_source", baked(fs::path(map).replace_extension(".prt").string())},
-            {"portals", baked(v.portals)},
-            {"portals_skipped", baked(v.portals_skipped)},
-            {"time_seconds", baked(v.seconds)},
-            {"base_seconds", baked(v.base_seconds)},
-            {"peak_rss_bytes", peak_rss_bytes()}};
+                        {"output", map},
+                        {"format", "Quake 2 (IBSP 38)"},
+                        {"method", o.phs_only ? "phs-only" : (o.fast ? "portal-fast" : o.method)},
+                        {"level", baked(o.level)},
+                        {"threads", baked(v.threads)},
+                        {"portal_source", baked(fs::path(map).replace_extension(".prt").string())},
+                        {"portals", baked(v.portals)},
+                        {"portals_skipped", baked(v.portals_skipped)},
+                        {"time_seconds", baked(v.seconds)},
+                        {"base_seconds", baked(v.base_seconds)},
+                        {"peak_rss_bytes", peak_rss_bytes()}};
     if (!o.phs_only)
         for (const ReportField& f : vis_report_fields(v, !(o.fast || o.method == "portal-fast"), false))
             if (f.name.starts_with(kWorkPrefix))
@@ -54,9 +54,11 @@ nlohmann::json quake2_report(const VisCommandOptions& o, const std::string& map,
     // The PVS the map held before against the one written.
     const Zone old_zone = quake2::load_ibsp38(before, map), new_zone = quake2::load_ibsp38(r.map, map);
     j["regions"] = new_zone.region_count();
-    report::add_report_fields(j, quake2::quake2_written_fields(r.clusters, r.mean_visible, r.mean_hearable, phs_rule_of(o)));
-    j["file_pvs"] = old_zone.baked_pvs && new_zone.baked_pvs ? report::pvs_diff_json(*new_zone.baked_pvs, *old_zone.baked_pvs)
-                                                             : nlohmann::json(nullptr);
+    report::add_report_fields(
+        j, quake2::quake2_written_fields(r.clusters, r.mean_visible, r.mean_hearable, phs_rule_of(o)));
+    j["file_pvs"] = old_zone.baked_pvs && new_zone.baked_pvs
+                        ? report::pvs_diff_json(*new_zone.baked_pvs, *old_zone.baked_pvs)
+                        : nlohmann::json(nullptr);
     return j;
 }
 

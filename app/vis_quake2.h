@@ -16,7 +16,7 @@
 namespace pvs::app {
 
 // `bytes` are the map's; returns the exit code (0, 1 no portal file, 2 bad arguments, 130 cancelled).
-int quake2_vis(const VisCommandOptions& options, const std::string& map, std::span<const uint8_t> bytes,
-               std::FILE* err, const std::atomic<bool>* cancel);
+int quake2_vis(const VisCommandOptions& options, const std::string& map, std::span<const uint8_t> bytes, std::FILE* err,
+               const std::atomic<bool>* cancel);
 
 } // namespace pvs::app

@@ -13,7 +13,7 @@ namespace pvs::ui {
 
 inline constexpr uint32_t kIdBitsPerChannel = 7;
 inline constexpr uint32_t kMaxIdValue = (1u << (3 * kIdBitsPerChannel)) - 1; // largest face id + 1
-inline constexpr uint32_t kMaxIdFaces = kMaxIdValue; // faces 0 .. kMaxIdFaces-1 are encodable
+inline constexpr uint32_t kMaxIdFaces = kMaxIdValue;                         // faces 0 .. kMaxIdFaces-1 are encodable
 inline constexpr uint32_t kNoFace = 0xFFFFFFFFu;
 
 // value = face id + 1 (1 .. kMaxIdValue): each channel 2b+1 with b = 7 bits of the value.

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds pvscope with AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, then runs
+# Checks the format of the lines the last commit changed (tests/tools/check_format.sh), builds
+# pvscope with AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, then runs
 # every test (ctest), then a smoke run of every libFuzzer target (tests/fuzz/run-smoke.sh: clang,
 # its own build folder, ~20 s a target; PVSCOPE_SKIP_FUZZ_SMOKE=1 leaves it out). Tests labelled
 # "slow" run only with PVSCOPE_SLOW_TESTS=1 (or `ctest -L slow` in a build folder).
@@ -9,6 +10,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${PVSCOPE_TEST_BUILD_DIR:-build-test}
+# The lines the change touches follow .clang-format (seconds; before the build's half hour).
+tests/tools/check_format.sh
 jobs=${PVSCOPE_JOBS:-$(nproc)}
 # -g1 (line tables only): sanitizer reports still name file and line, and the build takes about a
 # third less time than with full debug information.

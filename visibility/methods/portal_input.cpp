@@ -31,7 +31,8 @@ PortalSet build_method_portals(const Zone& zone, const MethodSettings& s, Portal
 void group_into_box_clusters(const Zone& zone, PortalInput& in)
 {
     if (!regions_are_boxes(zone.regions, in.portals)) {
-        in.notes.push_back("note: --clusters auto: the regions of " + zone.source.path + " are not boxes; baked per region");
+        in.notes.push_back("note: --clusters auto: the regions of " + zone.source.path +
+                           " are not boxes; baked per region");
         return;
     }
     in.clusters = box_merge_clusters(zone.regions, in.portals);
