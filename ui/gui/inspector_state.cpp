@@ -1,10 +1,11 @@
 #include "ui/gui/inspector_state.h"
 
+#include "gen/demo_zone.h"
 #include "ui/gui/camera_math.h"
 #include "visibility/area_flood.h"
 #include "visibility/math/frustum.h"
 #include "visibility/region_lookup.h"
-#include "gen/demo_zone.h"
+#include "wld/player_start.h"
 #include "wld/zone_file.h"
 
 #include <algorithm>
@@ -36,12 +37,17 @@ float free_distance(const Zone& zone, glm::vec3 from, glm::vec3 direction, float
 struct StartView {
     glm::vec3 position;
     float yaw_degrees;
+    float pitch_degrees = -10.0f; // a little floor in the picture
 };
 
-// The view a zone opens with: from the centres of its largest regions (whose centre is in them;
-// a Quake leaf's box can stick out of its convex volume), the one of 8 horizontal directions
-// with the longest free line of sight, so the first picture looks down a room or corridor
-// rather than at a wall. About 32 x 8 x 512 point lookups.
+// Regions a first view should not stand in: the void above a Quake level, a zone line (an
+// outdoor zone's edge, facing the next zone), and liquids.
+constexpr uint32_t kNoStartFlags = kRegionSky | kRegionZoneLine | kRegionWater | kRegionLava | kRegionSlime;
+
+// The view a zone opens with when the map names no player start: from the centres of its
+// largest regions (whose centre is in them; a Quake leaf's box can stick out of its convex
+// volume), the one of 8 horizontal directions with the longest free line of sight, so the first
+// picture looks down a room or corridor rather than at a wall. About 32 x 8 x 512 point lookups.
 std::optional<StartView> find_start_view(const Zone& zone, float diagonal)
 {
     constexpr size_t kCandidates = 32;
@@ -49,7 +55,7 @@ std::optional<StartView> find_start_view(const Zone& zone, float diagonal)
     std::vector<std::pair<float, uint32_t>> by_volume; // (volume, region)
     for (uint32_t r = 0; r < zone.region_count(); ++r) {
         const Aabb& b = zone.regions[r].bounds;
-        if (b.empty() || zone.regions[r].flags & kRegionSky)
+        if (b.empty() || zone.regions[r].flags & kNoStartFlags)
             continue;
         const glm::vec3 s = b.size();
         by_volume.emplace_back(s.x * s.y * s.z, r);
@@ -76,6 +82,15 @@ std::optional<StartView> find_start_view(const Zone& zone, float diagonal)
             break;
     }
     return best;
+}
+
+// Where the map puts its player (wld/player_start.h), when that point is in an open region.
+std::optional<StartView> player_start_view(const Zone& zone)
+{
+    const std::optional<PlayerStart> start = find_player_start(zone.source.path);
+    if (!start || !locate_point(zone.tree, start->eye).in_region())
+        return std::nullopt;
+    return StartView{start->eye, start->yaw_degrees, 0.0f};
 }
 
 } // namespace
@@ -212,10 +227,13 @@ void InspectorState::reset_camera()
         const float diagonal = glm::length(zone_stats_.bounds.size());
         view_.far_distance = std::max(view_.far_distance, diagonal * 2.0f);
         view_.position = zone_stats_.bounds.center();
-        if (const auto start = find_start_view(*zone_, diagonal)) {
+        std::optional<StartView> start = player_start_view(*zone_);
+        if (!start)
+            start = find_start_view(*zone_, diagonal);
+        if (start) {
             view_.position = start->position;
             view_.yaw_degrees = start->yaw_degrees;
-            view_.pitch_degrees = -10.0f; // a little floor in the picture
+            view_.pitch_degrees = start->pitch_degrees;
         }
     }
     cull_ = view_;
