@@ -58,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(Maps, SharedLevelFirstView,
                                            "modern-quake/q1/lqdm5.bsp", "modern-quake/q1/lq_e1m1.bsp",
                                            "modern-quake/q1/lq_e2m2.bsp", "modern-quake/q2/lqdm2-q2.bsp",
                                            "modern-quake/q2/lqdm5-q2.bsp"),
-                         [](const auto& info) { return test::param_name(info.param); });
+                         [](const auto& p) { return test::param_name(p.param); });
 
 TEST(FirstView, TheDemoZoneIsSeen)
 {

@@ -51,7 +51,7 @@ TEST_P(PlayerStartOf, IsTheEntitysOriginAtEyeHeightInAnOpenRegion)
 INSTANTIATE_TEST_SUITE_P(Maps, PlayerStartOf,
                          ::testing::Values("quake/e1m1.bsp", "quake/start.bsp", "modern-quake/q1/lq_e1m1.bsp",
                                            "modern-quake/q2/lqdm2-q2.bsp"),
-                         [](const auto& info) { return test::param_name(info.param); });
+                         [](const auto& p) { return test::param_name(p.param); });
 
 TEST(PlayerStart, OtherFilesAndBrokenLumpsHaveNone)
 {
