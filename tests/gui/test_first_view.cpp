@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <unistd.h>
@@ -58,7 +59,11 @@ INSTANTIATE_TEST_SUITE_P(Maps, SharedLevelFirstView,
                                            "modern-quake/q1/lqdm5.bsp", "modern-quake/q1/lq_e1m1.bsp",
                                            "modern-quake/q1/lq_e2m2.bsp", "modern-quake/q2/lqdm2-q2.bsp",
                                            "modern-quake/q2/lqdm5-q2.bsp"),
-                         [](const auto& p) { return test::param_name(p.param); });
+                         [](const auto& p) {
+                             std::string name = test::param_name(p.param); // gtest names: no '-'
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 TEST(FirstView, TheDemoZoneIsSeen)
 {

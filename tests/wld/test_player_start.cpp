@@ -51,16 +51,20 @@ TEST_P(PlayerStartOf, IsTheEntitysOriginAtEyeHeightInAnOpenRegion)
 INSTANTIATE_TEST_SUITE_P(Maps, PlayerStartOf,
                          ::testing::Values("quake/e1m1.bsp", "quake/start.bsp", "modern-quake/q1/lq_e1m1.bsp",
                                            "modern-quake/q2/lqdm2-q2.bsp"),
-                         [](const auto& p) { return test::param_name(p.param); });
+                         [](const auto& p) {
+                             std::string name = test::param_name(p.param); // gtest names: no '-'
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 TEST(PlayerStart, OtherFilesAndBrokenLumpsHaveNone)
 {
     EXPECT_FALSE(find_player_start(std::vector<uint8_t>{'P', 'W', 'A', 'D', 0, 0, 0, 0}));
     // A BSP 29 header (version, then 15 lumps of offset and length) and its entity lump.
-    std::vector<uint8_t> bsp(256, 0);
+    std::vector<uint8_t> bsp(400, 0);
     bsp[0] = 29;
     bsp[4] = 200; // entities at 200 ...
-    bsp[8] = 100; // ... for 100 bytes: past the end
+    bsp[8] = 250; // ... for 250 bytes: past the end
     EXPECT_FALSE(find_player_start(bsp));
     const std::string broken = "{ \"classname\" \"info_player_start\" \"origin\" \"1 2"; // no closing quote
     bsp[8] = uint8_t(broken.size());

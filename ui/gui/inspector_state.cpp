@@ -42,6 +42,9 @@ struct StartView {
 
 // Regions a first view should not stand in: the void above a Quake level, a zone line (an
 // outdoor zone's edge, facing the next zone), and liquids.
+// A first view that culls to fewer regions than this looks at a wall.
+constexpr size_t kFirstViewRegions = 20;
+
 constexpr uint32_t kNoStartFlags = kRegionSky | kRegionZoneLine | kRegionWater | kRegionLava | kRegionSlime;
 
 // The view a zone opens with when the map names no player start: from the centres of its
@@ -84,13 +87,29 @@ std::optional<StartView> find_start_view(const Zone& zone, float diagonal)
     return best;
 }
 
-// Where the map puts its player (wld/player_start.h), when that point is in an open region.
-std::optional<StartView> player_start_view(const Zone& zone)
+// Where the map puts its player (wld/player_start.h), when that point is in an open region,
+// facing the map's angle unless that looks at a near wall: then the one of 8 horizontal
+// directions with the longest free line of sight (a start in a booth or facing a door).
+std::optional<StartView> player_start_view(const Zone& zone, float diagonal)
 {
     const std::optional<PlayerStart> start = find_player_start(zone.source.path);
     if (!start || !locate_point(zone.tree, start->eye).in_region())
         return std::nullopt;
-    return StartView{start->eye, start->yaw_degrees, 0.0f};
+    const float step = std::max(diagonal / 512.0f, 1.0f), limit = diagonal / 2.0f;
+    const auto free_along = [&](float yaw) {
+        const glm::vec3 direction{std::cos(glm::radians(yaw)), std::sin(glm::radians(yaw)), 0.0f};
+        return free_distance(zone, start->eye, direction, step, limit);
+    };
+    float longest_yaw = start->yaw_degrees, longest = free_along(start->yaw_degrees);
+    const float own = longest;
+    for (int d = 1; d < 8; ++d) {
+        const float yaw = start->yaw_degrees + float(d) * 45.0f, distance = free_along(yaw);
+        if (distance > longest) {
+            longest = distance;
+            longest_yaw = yaw;
+        }
+    }
+    return StartView{start->eye, own >= 0.5f * longest ? start->yaw_degrees : longest_yaw, 0.0f};
 }
 
 } // namespace
@@ -227,7 +246,18 @@ void InspectorState::reset_camera()
         const float diagonal = glm::length(zone_stats_.bounds.size());
         view_.far_distance = std::max(view_.far_distance, diagonal * 2.0f);
         view_.position = zone_stats_.bounds.center();
-        std::optional<StartView> start = player_start_view(*zone_);
+        const auto regions_seen_from = [&](const StartView& v) {
+            Camera c = view_;
+            c.position = v.position;
+            c.yaw_degrees = v.yaw_degrees;
+            c.pitch_degrees = v.pitch_degrees;
+            std::vector<uint32_t> seen;
+            culler_->cull(c, CullOptions{}, seen);
+            return seen.size();
+        };
+        std::optional<StartView> start = player_start_view(*zone_, diagonal);
+        if (start && culler_ && regions_seen_from(*start) < kFirstViewRegions)
+            start.reset(); // a start in a booth or before a door: the view down the largest room instead
         if (!start)
             start = find_start_view(*zone_, diagonal);
         if (start) {
