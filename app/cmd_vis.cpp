@@ -4,31 +4,21 @@
 
 #include "app/cli_validators.h"
 #include "app/cmd_bake.h"
-#include "app/process_memory.h"
-#include "app/progress_bar.h"
 #include "app/sigint_scope.h"
-#include "report/pvs_diff_json.h"
-#include "report/report_fields_json.h"
 #include "visibility/file_error.h"
-#include "visibility/methods/vis_report_fields.h"
 #include "wld/common/read_file.h"
 #include "wld/quake/ambient_sounds.h"
 #include "wld/quake/bsp29_reader.h"
 #include "wld/quake/bsp_layout.h"
-#include "wld/quake/prt_file.h"
 #include "wld/quake2/ibsp38_file.h"
-#include "wld/quake2/ibsp38_zone.h"
-#include "wld/quake2/quake2_vis.h"
 #include "wld/zone_file.h"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <optional>
 #include <unistd.h>
 
 namespace pvs::app {
@@ -151,9 +141,13 @@ int checked(const VisCommandOptions& o, std::FILE* err, const std::atomic<bool>*
         return file_error(err, map + ": no such map");
     const std::vector<uint8_t> head = read_file_head(map, 8);
     if (quake2::looks_like_ibsp38(head)) {
-        if (o.portals == "file" || o.phs_only || o.ambient_only)
-            return quake2_vis(o, map, read_whole_file(map), err, cancel);
-        // --portals tree: per leaf from the tree, the leaves' rows ORed per cluster (as bake).
+        if (o.ambient_only)
+            return bad_arguments(err, map + " is a Quake 2 map: --ambient-only is for Quake maps (Quake 2 keeps no "
+                                            "ambient sounds in the map)");
+        if (o.phs_only)
+            return quake2_phs_only(o, map, read_whole_file(map), err);
+        // qbsp's portal file over the clusters, or (--portals tree) per leaf from the tree with the
+        // leaves' rows ORed per cluster: bake writes both.
         if (const int code = vis_through_bake(o, map, err, cancel); code != 0)
             return code;
         std::fprintf(err, "%s: PVS and PHS written in place\n", map.c_str());

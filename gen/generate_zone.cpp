@@ -1,9 +1,10 @@
 #include "gen/generate_zone.h"
 
-#include "visibility/portal/portal_vis.h"
-#include "visibility/portal/portalize.h"
 #include "gen/grid_zone.h"
 #include "gen/voxel_level.h"
+#include "visibility/methods/portal_input.h"
+#include "visibility/methods/vis_method.h"
+#include "visibility/zone_stats.h"
 
 #include <cstdio>
 #include <glm/common.hpp>
@@ -12,33 +13,37 @@
 
 namespace pvs::gen {
 
-// The zone's own portals, baked with `method` (Full: level 4); the notes say how it was made.
+// The zone's own portals, baked by the registry's portal-full (level 4) or portal-fast; the notes
+// say how it was made.
 void bake_generated_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress,
                         VisParams::Method method, bool enclosed)
 {
-    const char* name = method == VisParams::Method::Full ? "portal-full (level 4)" : "portal-fast (base vis)";
-    PortalStats portal_stats;
-    zone.portals = build_zone_portals(zone, {}, &portal_stats);
-    VisParams params;
-    params.method = method;
-    params.level = 4;
-    params.threads = threads;
-    params.progress = progress;
-    VisReport report;
-    zone.baked_pvs = bake_portal_vis(*zone.portals, uint32_t(zone.regions.size()), params, &report);
-    if (report.cancelled) {
+    const bool full = method == VisParams::Method::Full;
+    const char* name = full ? "portal-full (level 4)" : "portal-fast (base vis)";
+    MethodSettings settings;
+    settings.level = 4;
+    settings.threads = threads;
+    settings.progress = progress;
+    const PortalInput input = zone_portal_input(zone, settings);
+    zone.portals = input.portals;
+    settings.portals = &input;
+    MethodRun run = find_vis_method(full ? "portal-full" : "portal-fast")->run(zone, settings);
+    if (run.cancelled) {
         zone.baked_pvs.reset();
         zone.source.notes.push_back(std::string("no PVS: the ") + name + " bake was cancelled");
         return;
     }
+    zone.baked_pvs = std::move(run.pvs);
+    const ReportField* used = find_field(run.fields, "portals"); // the portals the bake could use
     char note[200];
     std::snprintf(note, sizeof note,
-                  "PVS baked with %s from %zu portals built from the tree: mean %.1f of %zu regions visible",
-                  name, report.portals, report.mean_visible, zone.regions.size());
+                  "PVS baked with %s from %llu portals built from the tree: mean %.1f of %zu regions visible", name,
+                  used ? static_cast<unsigned long long>(std::get<uint64_t>(used->value)) : 0ull,
+                  compute_pvs_density(*zone.baked_pvs).mean_visible, zone.regions.size());
     zone.source.notes.push_back(note);
     // Solid cells are kLeafOutside leaves here, so only the world box counts as a leak.
-    if (enclosed && !portal_stats.leaves_touching_world.empty())
-        zone.source.notes.push_back("warning: " + std::to_string(portal_stats.leaves_touching_world.size()) +
+    if (enclosed && input.stats && !input.stats->leaves_touching_world.empty())
+        zone.source.notes.push_back("warning: " + std::to_string(input.stats->leaves_touching_world.size()) +
                                     " open leaves touch the world box (a leak in the generator)");
 }
 

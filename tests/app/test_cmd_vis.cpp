@@ -253,7 +253,7 @@ TEST_F(VisCommand, Quake2ReportNamesWhatWasWritten)
     uint64_t clusters = 0, portals = 0;
     prt >> magic >> clusters >> portals;
     EXPECT_EQ(magic, "PRT1");
-    EXPECT_EQ(j.at("format"), "Quake 2 (IBSP 38)");
+    EXPECT_EQ(j.at("format"), "Quake 2 BSP (IBSP 38)");
     EXPECT_EQ(j.at("clusters"), out.clusters);
     EXPECT_EQ(j.at("clusters").get<uint64_t>(), clusters);
     EXPECT_EQ(j.at("portals").get<uint64_t>(), portals);

@@ -1,15 +1,17 @@
 // The first view a zone opens with is one a player would recognise: where the map puts its player
-// (Quake's and Quake 2's info_player_start), else the open region with the longest sight line,
+// (Quake's and Quake 2's info_player_start, Doom's player 1 start), else the open region with the longest sight line,
 // never a zone line, a liquid or the sky. Its first frame draws at least 20 regions, and at least
 // 30 % of its pixels show faces (an ID-buffer frame: not the background), many of them (not one
-// wall in front of the camera). Over the shared Quake and Quake 2 levels, the demo zone and a
-// generated outdoor zone.
+// wall in front of the camera). Over the shared Quake and Quake 2 levels, Freedoom maps, the demo
+// zone and a generated outdoor zone.
 #include "gen/generate_outdoor_zone.h"
 #include "render/colour_codes.h"
 #include "render/render_mode.h"
+#include "tests/support/freedoom.h"
 #include "tests/support/test_data.h"
 #include "ui/gui/inspector_state.h"
 #include "wld/convert.h"
+#include "wld/player_start.h"
 
 #include <gtest/gtest.h>
 
@@ -59,11 +61,26 @@ INSTANTIATE_TEST_SUITE_P(Maps, SharedLevelFirstView,
                                            "modern-quake/q1/lqdm5.bsp", "modern-quake/q1/lq_e1m1.bsp",
                                            "modern-quake/q1/lq_e2m2.bsp", "modern-quake/q2/lqdm2-q2.bsp",
                                            "modern-quake/q2/lqdm5-q2.bsp"),
-                         [](const auto& p) {
-                             std::string name = test::param_name(p.param); // gtest names: no '-'
-                             std::replace(name.begin(), name.end(), '-', '_');
-                             return name;
-                         });
+                         [](const auto& p) { return test::param_name(p.param); });
+
+// A Doom map opens at player 1's start (its eye where find_zone_player_start puts it).
+TEST(FirstView, ADoomMapOpensAtPlayerOnesStart)
+{
+    for (const auto& [wad_name, map] : {std::pair{"freedoom1.wad", "E1M1"}, std::pair{"freedoom2.wad", "MAP01"}}) {
+        FREEDOOM_OR_SKIP(wad, wad_name);
+        GL_NODES_OR_SKIP(gwa, wad, test::GlBuilder::glbsp_v2);
+        InspectorState state;
+        state.set_viewport_size(320, 240);
+        ZoneLoadOptions load;
+        load.map = map;
+        load.gwa = gwa;
+        ASSERT_TRUE(state.open_zone(wad, load)) << state.error();
+        const std::optional<PlayerStart> start = find_zone_player_start(state.zone());
+        ASSERT_TRUE(start) << map;
+        EXPECT_EQ(state.view_camera().position, start->eye) << map;
+        expect_a_view(state, map);
+    }
+}
 
 TEST(FirstView, TheDemoZoneIsSeen)
 {

@@ -3,6 +3,7 @@
 #include "wld/common/read_file.h"
 #include "wld/zone_file.h"
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -47,7 +48,11 @@ const Zone* shared_zone(const std::string& relative)
 
 std::string param_name(const std::string& relative_path)
 {
-    return std::filesystem::path(relative_path).stem().string();
+    std::string name = std::filesystem::path(relative_path).stem().string();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c)))
+            c = '_';
+    return name;
 }
 
 } // namespace pvs::test

@@ -23,7 +23,8 @@ bool shared_data_required();
 std::vector<uint8_t> read_bytes(const std::string& path);
 // A shared-data zone, loaded once per test binary and kept; nullptr when the file is absent.
 const Zone* shared_zone(const std::string& relative);
-// A gtest parameter name from a data file path: "quake/e1m1.bsp" -> "e1m1".
+// A gtest parameter name from a data file path: its stem, every character but letters and digits
+// made '_' (gtest allows no other): "quake/e1m1.bsp" -> "e1m1", "q1/lqdm2-bsp2.bsp" -> "lqdm2_bsp2".
 std::string param_name(const std::string& relative_path);
 
 } // namespace pvs::test

@@ -3,6 +3,7 @@
 // frustums (all six planes and the sides only), far-plane spheres and rows, including boxes
 // placed to touch a block's boundary, in Morton blocks and in blocks that follow the file's own
 // spatial numbering; and the intersect mask equals intersects() box by box.
+#include "tests/support/culling_inputs.h"
 #include "visibility/bit_row.h"
 #include "visibility/math/frustum_boxes.h"
 #include "visibility/region_blocks.h"
@@ -19,41 +20,11 @@
 namespace pvs {
 namespace {
 
-Frustum random_frustum(std::mt19937& rng, float far)
-{
-    std::uniform_real_distribution<float> u(-500.0f, 500.0f), fov(30.0f, 110.0f), aspect(0.6f, 2.0f);
-    const glm::vec3 eye{u(rng), u(rng), u(rng)};
-    glm::vec3 at{u(rng), u(rng), u(rng)};
-    if (glm::length(at - eye) < 1.0f)
-        at += glm::vec3(10.0f, 0.0f, 0.0f);
-    const glm::mat4 proj = glm::perspective(glm::radians(fov(rng)), aspect(rng), 1.0f, far);
-    return Frustum::from_view_projection(proj * glm::lookAt(eye, at, glm::vec3(0, 0, 1)));
-}
+using test::random_frustum;
+using test::random_row;
 
-// A grid of cells (as outdoor zones), shuffled ids, a few odd boxes.
-std::vector<Aabb> grid_boxes(std::mt19937& rng, int n)
-{
-    std::vector<Aabb> boxes;
-    for (int z = 0; z < n / 2; ++z)
-        for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x)
-                boxes.push_back({glm::vec3(x, y, z) * 40.0f - 400.0f, glm::vec3(x + 1, y + 1, z + 1) * 40.0f - 400.0f});
-    std::shuffle(boxes.begin(), boxes.end(), rng);
-    boxes[3] = Aabb{};                                            // empty
-    boxes[70].max.x = std::numeric_limits<float>::infinity();     // not finite
-    boxes[71].min.y = std::numeric_limits<float>::quiet_NaN();
-    return boxes;
-}
-
-std::vector<uint64_t> random_row(std::mt19937& rng, size_t n, double density)
-{
-    std::vector<uint64_t> row(bits::words_for(n), 0);
-    std::bernoulli_distribution pick(density);
-    for (size_t i = 0; i < n; ++i)
-        if (pick(rng))
-            bits::set(row, i);
-    return row;
-}
+// The shared grid, ids shuffled (as outdoor zones).
+std::vector<Aabb> grid_boxes(std::mt19937& rng, int n) { return test::grid_boxes(rng, n, true); }
 
 // collect() against each region's own test, for random frustums and rows; returns the regions kept.
 size_t check_collect(const std::vector<Aabb>& boxes, const RegionBlocks& blocks, std::mt19937& rng)

@@ -2,6 +2,7 @@
 // grid of boxes in spatial id order and shuffled, with empty and non-finite boxes among them, for
 // random frustums (all six planes and the sides only) and rows sparse and dense; and it counts the
 // words it read and the word boxes it decided.
+#include "tests/support/culling_inputs.h"
 #include "visibility/bit_row.h"
 #include "visibility/math/frustum_boxes.h"
 #include "visibility/row_word_boxes.h"
@@ -17,49 +18,22 @@
 namespace pvs {
 namespace {
 
-Frustum random_frustum(std::mt19937& rng, float far)
+// The shared grid with a word of empty boxes only (ids 128..191).
+std::vector<Aabb> grid_boxes_with_empty_word(std::mt19937& rng, int n, bool shuffled)
 {
-    std::uniform_real_distribution<float> u(-500.0f, 500.0f), fov(30.0f, 110.0f), aspect(0.6f, 2.0f);
-    const glm::vec3 eye{u(rng), u(rng), u(rng)};
-    glm::vec3 at{u(rng), u(rng), u(rng)};
-    if (glm::length(at - eye) < 1.0f)
-        at += glm::vec3(10.0f, 0.0f, 0.0f);
-    const glm::mat4 proj = glm::perspective(glm::radians(fov(rng)), aspect(rng), 1.0f, far);
-    return Frustum::from_view_projection(proj * glm::lookAt(eye, at, glm::vec3(0, 0, 1)));
-}
-
-// A grid of cells, x fastest (neighbouring ids lie together) or shuffled, a few odd boxes.
-std::vector<Aabb> grid_boxes(std::mt19937& rng, int n, bool shuffled)
-{
-    std::vector<Aabb> boxes;
-    for (int z = 0; z < n / 2; ++z)
-        for (int y = 0; y < n; ++y)
-            for (int x = 0; x < n; ++x)
-                boxes.push_back({glm::vec3(x, y, z) * 40.0f - 400.0f, glm::vec3(x + 1, y + 1, z + 1) * 40.0f - 400.0f});
-    if (shuffled)
-        std::shuffle(boxes.begin(), boxes.end(), rng);
-    boxes[3] = Aabb{};                                        // empty
-    boxes[70].max.x = std::numeric_limits<float>::infinity(); // not finite
-    boxes[71].min.y = std::numeric_limits<float>::quiet_NaN();
+    std::vector<Aabb> boxes = test::grid_boxes(rng, n, shuffled);
     for (int i = 128; i < 192; ++i)
-        boxes[size_t(i)] = Aabb{}; // a word of empty boxes only
+        boxes[size_t(i)] = Aabb{};
     return boxes;
 }
 
-std::vector<uint64_t> random_row(std::mt19937& rng, size_t n, double density)
-{
-    std::vector<uint64_t> row(bits::words_for(n), 0);
-    std::bernoulli_distribution pick(density);
-    for (size_t i = 0; i < n; ++i)
-        if (pick(rng))
-            bits::set(row, i);
-    return row;
-}
+using test::random_frustum;
+using test::random_row;
 
 void check(bool shuffled)
 {
     std::mt19937 rng(shuffled ? 3 : 5);
-    const std::vector<Aabb> boxes = grid_boxes(rng, 20, shuffled);
+    const std::vector<Aabb> boxes = grid_boxes_with_empty_word(rng, 20, shuffled);
     const FrustumBoxes regions(boxes);
     const RowWordBoxes words(boxes);
     std::vector<uint32_t> got(boxes.size());

@@ -64,8 +64,7 @@ INSTANTIATE_TEST_SUITE_P(SharedMaps, VisAmbient,
                                          "quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/dm2.bsp",
                                          "quake/start.bsp", "quake/end.bsp"),
                          [](const testing::TestParamInfo<const char*>& p) {
-                             std::string name = test::param_name(p.param);
-                             return name.substr(0, name.find('.')); // "lqdm2.ericw-vis" -> "lqdm2"
+                             return test::param_name(p.param); // "lqdm2.ericw-vis.bsp" -> "lqdm2_ericw_vis"
                          });
 
 // The shared README's sums: lqdm2 452 leaves with a level, sky 115 260 in all; lqdm5 444 975

@@ -52,13 +52,7 @@ TEST_P(SharedLevelCullWork, WithinBaseline)
 INSTANTIATE_TEST_SUITE_P(SharedLevels, SharedLevelCullWork,
                          testing::Values("quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/dm2.bsp",
                                          "quake/start.bsp", "quake/end.bsp", "modern-quake/q1/lqdm5.ericw-vis.bsp"),
-                         [](const testing::TestParamInfo<const char*>& p) {
-                             std::string name = test::param_name(p.param);
-                             for (char& c : name)
-                                 if (!std::isalnum(static_cast<unsigned char>(c)))
-                                     c = '_';
-                             return name;
-                         });
+                         [](const testing::TestParamInfo<const char*>& p) { return test::param_name(p.param); });
 
 TEST(CullWork, DemoZoneWithinBaseline)
 {

@@ -15,9 +15,6 @@
 #include "tests/support/test_data.h"
 #include "tests/support/work_baseline.h"
 #include "visibility/methods/vis_method.h"
-#include "visibility/methods/vis_report_fields.h"
-#include "visibility/portal/cluster_vis.h"
-#include "visibility/portal/portal_vis.h"
 #include "wld/common/read_file.h"
 #include "wld/doom/doom_map.h"
 #include "wld/doom/doom_zone.h"
@@ -45,32 +42,25 @@ std::map<std::string, uint64_t> work_of(const std::vector<ReportField>& fields)
     return work;
 }
 
-VisParams one_thread_full()
-{
-    VisParams params;
-    params.threads = 1; // the counts are the same at any count (WorkCounters.SameAtAnyThreadCount)
-    return params;
-}
-
-// `pvscope vis MAP` where the map has qbsp's portal file beside it.
+// `pvscope vis MAP` where the map has qbsp's portal file beside it: the registry's portal-full on
+// the file's portals, over its clusters (PRT2 / PRT1-AM; a Quake 2 map's PRT1 names its clusters).
 std::map<std::string, uint64_t> vis_with_portal_file(const std::string& path)
 {
     const std::string prt_path = std::filesystem::path(path).replace_extension(".prt").string();
-    const std::vector<uint8_t> bytes = read_whole_file(path);
+    const Zone zone = load_zone(path);
     quake::PrtFile prt = quake::load_prt(prt_path);
-    VisReport report;
-    if (quake2::looks_like_ibsp38(bytes)) {
-        quake2::Quake2VisOptions options;
-        options.vis = one_thread_full();
-        report = quake2::vis_quake2_map(bytes, path, &prt, prt_path, options).report;
-    } else {
-        const Zone zone = load_zone(path);
-        if (prt.has_clusters())
-            bake_cluster_portal_vis(prt.portals, prt.cluster_of_leaf, prt.cluster_count, one_thread_full(), &report);
-        else
-            bake_portal_vis(prt.portals, uint32_t(zone.region_count()), one_thread_full(), &report);
+    PortalInput input;
+    input.portals = std::move(prt.portals);
+    if (prt.has_clusters()) {
+        input.clusters = RegionClusters{std::move(prt.cluster_of_leaf), prt.cluster_count};
+    } else if (const std::vector<uint8_t> bytes = read_whole_file(path); quake2::looks_like_ibsp38(bytes)) {
+        const quake2::RegionClusterMap map = quake2::region_clusters(bytes, path, zone);
+        input.clusters = RegionClusters{{map.cluster_of_region.begin(), map.cluster_of_region.end()}, map.clusters};
     }
-    return work_of(vis_report_fields(report, true, false));
+    MethodSettings settings;
+    settings.threads = 1; // the counts are the same at any count (WorkCounters.SameAtAnyThreadCount)
+    settings.portals = &input;
+    return work_of(find_vis_method("portal-full")->run(zone, settings).fields);
 }
 
 // `pvscope bake MAP --method portal-full`.
@@ -98,21 +88,16 @@ TEST_P(QuakeWork, WithinBaseline)
         check_against_baseline(GetParam(), bake_portal_full(*test::shared_zone(GetParam())));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    SharedMaps, QuakeWork,
-    testing::Values("quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/dm2.bsp", "quake/start.bsp",
-                    "quake/end.bsp", "visdemo/example.bsp", "modern-quake/q1/lqdm2.bsp",
-                    "modern-quake/q1/lqdm2-bsp2.bsp", "modern-quake/q1/lqdm2-2psb.bsp", "modern-quake/q1/lqdm5.bsp",
-                    "modern-quake/q1/lq_e1m1.bsp", "modern-quake/q1/lq_e2m2.bsp", "modern-quake/q2/q2_liquids.bsp",
-                    "modern-quake/q2/q2_areaportals.bsp", "modern-quake/q2/q2_tjunc_matrix.bsp",
-                    "modern-quake/q2/lqdm2-q2.bsp", "modern-quake/q2/lqdm5-q2.bsp"),
-    [](const testing::TestParamInfo<const char*>& p) {
-        std::string name = test::param_name(p.param);
-        for (char& c : name)
-            if (!std::isalnum(static_cast<unsigned char>(c)))
-                c = '_';
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(SharedMaps, QuakeWork,
+                         testing::Values("quake/e1m1.bsp", "quake/e1m2.bsp", "quake/e2m1.bsp", "quake/dm2.bsp",
+                                         "quake/start.bsp", "quake/end.bsp", "visdemo/example.bsp",
+                                         "modern-quake/q1/lqdm2.bsp", "modern-quake/q1/lqdm2-bsp2.bsp",
+                                         "modern-quake/q1/lqdm2-2psb.bsp", "modern-quake/q1/lqdm5.bsp",
+                                         "modern-quake/q1/lq_e1m1.bsp", "modern-quake/q1/lq_e2m2.bsp",
+                                         "modern-quake/q2/q2_liquids.bsp", "modern-quake/q2/q2_areaportals.bsp",
+                                         "modern-quake/q2/q2_tjunc_matrix.bsp", "modern-quake/q2/lqdm2-q2.bsp",
+                                         "modern-quake/q2/lqdm5-q2.bsp"),
+                         [](const testing::TestParamInfo<const char*>& p) { return test::param_name(p.param); });
 
 // Freedoom's maps through the 2-D flow, glbsp's GL nodes. MAP12, whose bake under the sanitizers
 // takes minutes, is left to the benchmark (docs/performance.md gives the command).

@@ -92,7 +92,7 @@ std::optional<StartView> find_start_view(const Zone& zone, float diagonal)
 // directions with the longest free line of sight (a start in a booth or facing a door).
 std::optional<StartView> player_start_view(const Zone& zone, float diagonal)
 {
-    const std::optional<PlayerStart> start = find_player_start(zone.source.path);
+    const std::optional<PlayerStart> start = find_zone_player_start(zone);
     if (!start || !locate_point(zone.tree, start->eye).in_region())
         return std::nullopt;
     const float step = std::max(diagonal / 512.0f, 1.0f), limit = diagonal / 2.0f;

@@ -1,10 +1,9 @@
 // Why A's row holds B, or not (pair_explanation.h).
 #include "visibility/eval/pair_explanation.h"
 
+#include "visibility/methods/portal_input.h"
+#include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
-
-#include "visibility/portal/portal_vis.h"
-#include "visibility/portal/portal_vis_2d.h"
 #include "visibility/reference/grid_witness.h"
 #include "visibility/reference/mesh_tracer.h"
 #include "visibility/reference/region_sampler.h"
@@ -49,23 +48,27 @@ std::vector<uint32_t> regions_along(const TreeTracer& tracer, const glm::dvec3& 
     return regions;
 }
 
-// The flow's chain from a to b, if it holds the pair (into e.chain, e.portals); returns the flow's PVS.
+// The flow's chain from a to b, if it holds the pair (into e.chain, e.portals): the registry's
+// portal-full over the zone's own portals (never clusters), with a probe; returns the flow's PVS.
 Pvs find_chain(const Zone& zone, uint32_t a, uint32_t b, const ExplainOptions& options, PairExplanation& e)
 {
-    e.portals = method_portals(zone, options.flow);
-    e.chain_2d = method_uses_2d_vis(zone, options.flow);
+    MethodSettings settings = options.flow;
+    settings.box_clusters = false;
+    settings.portals = nullptr;
+    const PortalInput input = zone_portal_input(zone, settings);
+    e.portals = input.portals;
+    e.chain_2d = zone_uses_2d_vis(zone, settings);
     ChainProbe probe;
     probe.from = a;
     probe.to = b;
-    VisParams params = method_vis_params(options.flow, VisParams::Method::Full); // as the registry's portal-full
-    params.probe = &probe;
-    const uint32_t regions = uint32_t(zone.region_count());
-    const Pvs flow = e.chain_2d ? bake_portal_vis_2d(e.portals, regions, params) : bake_portal_vis(e.portals, regions, params);
+    settings.portals = &input;
+    settings.chain_probe = &probe;
+    MethodRun run = find_vis_method("portal-full")->run(zone, settings);
     e.flow_run = true;
-    e.flow_holds = flow.visible(a, b);
+    e.flow_holds = run.pvs->visible(a, b);
     if (const FlowChain* best = probe.best())
         e.chain = *best;
-    return flow;
+    return std::move(*run.pvs);
 }
 
 std::string describe(const PairExplanation& e)

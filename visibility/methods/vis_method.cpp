@@ -120,13 +120,15 @@ MethodRun run_portal(const Zone& zone, const MethodSettings& s, VisParams::Metho
     const PortalInput& in = s.portals ? *s.portals : built;
     const uint32_t regions = uint32_t(zone.region_count());
     const bool flow_2d = !in.clusters && zone_uses_2d_vis(zone, s);
+    VisParams params = vis_params(s, method);
+    if (method == VisParams::Method::Full && !in.clusters)
+        params.probe = s.chain_probe;
     VisReport report;
     ClusterReport cluster_report;
     Pvs pvs = in.clusters ? bake_cluster_portal_vis(in.portals, in.clusters->cluster_of_region,
-                                                    in.clusters->cluster_count, vis_params(s, method), &report,
-                                                    &cluster_report)
-              : flow_2d   ? bake_portal_vis_2d(in.portals, regions, vis_params(s, method), &report)
-                          : bake_portal_vis(in.portals, regions, vis_params(s, method), &report);
+                                                    in.clusters->cluster_count, params, &report, &cluster_report)
+              : flow_2d   ? bake_portal_vis_2d(in.portals, regions, params, &report)
+                          : bake_portal_vis(in.portals, regions, params, &report);
     MethodRun run = run_from_report(std::move(pvs), report, seconds_since(start),
                                     flow_2d ? std::string(name) + " (2-D)" : std::string(name));
     run.notes = in.notes;
@@ -341,11 +343,6 @@ PortalSet method_portals(const Zone& zone, const MethodSettings& settings)
     plain.box_clusters = false;
     plain.portals = nullptr;
     return zone_portal_input(zone, plain).portals;
-}
-
-VisParams method_vis_params(const MethodSettings& settings, VisParams::Method method)
-{
-    return vis_params(settings, method);
 }
 
 bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings) { return zone_uses_2d_vis(zone, settings); }

@@ -62,6 +62,10 @@ struct MethodSettings {
     // grouped into box clusters with `box_clusters` where the regions are boxes.
     const PortalInput* portals = nullptr;
     bool box_clusters = false;
+    // portal-full over regions (no clusters): when given, the flow records the chains along which
+    // it reached chain_probe->to from chain_probe->from (flow_chain.h), as `why` shows them; the
+    // rows are the same. Must outlive the run.
+    ChainProbe* chain_probe = nullptr;
     // portal methods on zones extruded from 2-D maps (Doom, BspTree::first_height_node): false
     // = ignore floors and ceilings, as glVIS (safe while doors and lifts move); true = the
     // heights as built block sight (closed doors, floor/ceiling gaps): only for static maps.
@@ -113,8 +117,6 @@ std::span<const VisMethod> vis_methods();
 // bake_portal_vis. Throw as those methods do (no tree).
 PortalSet method_portals(const Zone& zone, const MethodSettings& settings);
 bool method_uses_2d_vis(const Zone& zone, const MethodSettings& settings);
-// The VisParams portal-fast / portal-full bake with for these settings.
-VisParams method_vis_params(const MethodSettings& settings, VisParams::Method method);
 
 // nullptr when no method has that name.
 const VisMethod* find_vis_method(std::string_view name);
