@@ -1,12 +1,11 @@
 #include "gen/generate_outdoor_zone.h"
 
-#include "visibility/terrain/terrain_vis.h"
 #include "gen/generate_zone.h"
 #include "gen/grid_zone.h"
 #include "gen/terrain_level.h"
+#include "visibility/methods/vis_method.h"
 
 #include <cmath>
-#include <cstdio>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -20,22 +19,16 @@ namespace {
 // conservative, quicker than base vis and tighter. The notes say how the PVS was made.
 void bake_terrain_pvs(Zone& zone, unsigned threads, const std::function<bool(double)>& progress)
 {
-    TerrainVisParams params;
-    params.threads = threads;
-    params.progress = progress;
-    TerrainVisReport report;
-    Pvs pvs = bake_terrain_vis(zone, params, &report);
-    if (report.cancelled) {
+    MethodSettings settings;
+    settings.threads = threads;
+    settings.progress = progress;
+    MethodRun run = find_vis_method("terrain")->run(zone, settings);
+    if (run.cancelled || !run.pvs) {
         zone.source.notes.push_back("no PVS: the terrain bake was cancelled");
         return;
     }
-    zone.baked_pvs = std::move(pvs);
-    char note[200];
-    std::snprintf(note, sizeof note,
-                  "PVS baked with terrain (a horizon over a heightfield of %u x %u columns): mean %.1f of %zu regions "
-                  "visible",
-                  report.columns_x, report.columns_y, report.mean_visible, zone.regions.size());
-    zone.source.notes.push_back(note);
+    zone.baked_pvs = std::move(run.pvs);
+    zone.source.notes.push_back("PVS baked with " + run.summary);
 }
 
 } // namespace
