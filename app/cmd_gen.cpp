@@ -1,8 +1,8 @@
 #include "app/cmd_gen.h"
 
 #include "app/cmd_info.h"
+#include "app/error_path.h"
 #include "app/progress_bar.h"
-#include "visibility/file_error.h"
 #include "wld/convert.h"
 #include "gen/generate_outdoor_zone.h"
 #include "gen/terrain_level.h"
@@ -44,6 +44,71 @@ void print_case(const gen::StabilityCase& c)
                 double(c.camera.position.y), double(c.camera.position.z), double(c.camera.yaw_degrees),
                 double(c.camera.pitch_degrees));
 }
+
+// The zone the options ask for: a crafted case, an outdoor zone or rooms. Throws
+// std::invalid_argument for sizes the generators refuse.
+Zone make_zone(const GenOptions& o, const gen::GenParams& params, bool bake_asked, bool cell_given,
+               std::optional<gen::StabilityCase>& crafted)
+{
+    if (!o.case_name.empty()) {
+        crafted.emplace(gen::make_stability_case(o.case_name));
+        Zone zone = std::move(crafted->zone);
+        // A case is made without a PVS (stability runs every method on it); --bake asks for one.
+        if (bake_asked && params.bake) {
+            std::erase_if(zone.source.notes, [](const std::string& note) { return note.starts_with("no PVS"); });
+            gen::bake_generated_pvs(zone, params.bake_threads, params.bake_progress, VisParams::Method::Full, true);
+        }
+        return zone;
+    }
+    if (o.outdoor) {
+        gen::OutdoorParams outdoor;
+        outdoor.size = o.size;
+        outdoor.cell_size = cell_given ? params.cell_size : outdoor.cell_size;
+        outdoor.height = o.height;
+        outdoor.seed = params.seed;
+        outdoor.bake = params.bake;
+        outdoor.bake_progress = params.bake_progress;
+        return gen::generate_outdoor_zone(outdoor);
+    }
+    return gen::generate_zone(params);
+}
+
+int run_gen(const GenOptions& o, bool bake_asked, bool cell_given, std::FILE* err)
+{
+    // The output's kind is known before the zone is made (an outdoor bake takes minutes).
+    const auto output = o.output.empty() ? std::nullopt : zone_output_for(o.output, "");
+    if (!o.output.empty() && !output)
+        return bad_arguments(err, "'" + o.output + "': the output must end in .s3d or .obj");
+    const auto start = std::chrono::steady_clock::now();
+    gen::GenParams params = o.params;
+    std::optional<ProgressBar> bar; // made on the first call: only a bake that runs shows it
+    params.bake_progress = [&bar, err](double fraction) {
+        if (!bar)
+            bar.emplace(err, "bake");
+        bar->update(fraction);
+        return true;
+    };
+    std::optional<gen::StabilityCase> crafted;
+    std::optional<Zone> zone;
+    try {
+        zone.emplace(make_zone(o, params, bake_asked, cell_given, crafted));
+    } catch (const std::invalid_argument& e) {
+        return bad_arguments(err, e.what());
+    }
+    if (bar)
+        bar->finish();
+    if (crafted && !o.json)
+        print_case(*crafted);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    print_zone_report(*zone, ms, o.json);
+    if (!output)
+        return kExitOk;
+    return run_reporting_errors(o.output, err, [&] {
+        for (const std::string& note : write_zone(*zone, o.output, *output))
+            std::fprintf(err, "note: %s\n", note.c_str());
+        return kExitOk;
+    });
+}
 } // namespace
 
 void register_gen_command(CLI::App& app, int& exit_code)
@@ -83,68 +148,7 @@ void register_gen_command(CLI::App& app, int& exit_code)
         ->excludes(outdoor);
     cmd->add_option("-o,--output", options->output, "Also write the zone (.s3d or .obj)");
     cmd->callback([options, cell, bake, &exit_code] {
-        // The output's kind is known before the zone is made (an outdoor bake takes minutes).
-        const auto output = options->output.empty() ? std::nullopt : zone_output_for(options->output, "");
-        if (!options->output.empty() && !output) {
-            std::fprintf(stderr, "pvscope: error: '%s': the output must end in .s3d or .obj\n", options->output.c_str());
-            exit_code = 2;
-            return;
-        }
-        const auto start = std::chrono::steady_clock::now();
-        gen::GenParams params = options->params;
-        std::optional<ProgressBar> bar; // made on the first call: only a bake that runs shows it
-        params.bake_progress = [&bar](double fraction) {
-            if (!bar)
-                bar.emplace(stderr, "bake");
-            bar->update(fraction);
-            return true;
-        };
-        std::optional<gen::StabilityCase> crafted;
-        if (!options->case_name.empty())
-            crafted.emplace(gen::make_stability_case(options->case_name));
-        std::optional<Zone> made;
-        if (crafted) {
-            made.emplace(std::move(crafted->zone));
-            // A case is made without a PVS (stability runs every method on it); --bake asks for one.
-            if (bake->count() > 0 && params.bake) {
-                std::erase_if(made->source.notes, [](const std::string& note) { return note.starts_with("no PVS"); });
-                gen::bake_generated_pvs(*made, params.bake_threads, params.bake_progress, VisParams::Method::Full, true);
-            }
-        }
-        else if (options->outdoor) {
-            gen::OutdoorParams outdoor_params;
-            outdoor_params.size = options->size;
-            outdoor_params.cell_size = cell->count() > 0 ? params.cell_size : outdoor_params.cell_size;
-            outdoor_params.height = options->height;
-            outdoor_params.seed = params.seed;
-            outdoor_params.bake = params.bake;
-            outdoor_params.bake_progress = params.bake_progress;
-            try {
-                made.emplace(gen::generate_outdoor_zone(outdoor_params));
-            } catch (const std::invalid_argument& e) {
-                std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-                exit_code = 2;
-                return;
-            }
-        } else
-            made.emplace(gen::generate_zone(params));
-        const Zone& zone = *made;
-        if (bar)
-            bar->finish();
-        if (crafted && !options->json)
-            print_case(*crafted);
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        print_zone_report(zone, ms, options->json);
-        exit_code = 0;
-        if (!output)
-            return;
-        try {
-            for (const std::string& note : write_zone(zone, options->output, *output))
-                std::fprintf(stderr, "note: %s\n", note.c_str());
-        } catch (const FileError& e) {
-            std::fprintf(stderr, "pvscope: error: %s\n", e.what());
-            exit_code = 1;
-        }
+        exit_code = run_gen(*options, bake->count() > 0, cell->count() > 0, stderr);
     });
 }
 
