@@ -132,7 +132,9 @@ void draw_missing_pairs(InspectorState& state, const ui::CompareResult& result)
 
 void draw_compare_panel(InspectorState& state, ComparePanel& panel)
 {
-    if (!ImGui::Begin("Compare")) {
+    const bool drawn = ImGui::Begin("Compare");
+    panel.expanded = !ImGui::IsWindowCollapsed(); // the tiling gives it room next frame
+    if (!drawn) {
         ImGui::End();
         return;
     }

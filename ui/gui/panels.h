@@ -113,7 +113,7 @@ void draw_bake_panel(InspectorState& state, BakePanel& panel);
 struct ComparePanel {
     int reference_samples = 512; // the reference's lines per region
     int cameras = 100;           // the walk's cameras (popping and overdraw)
-    bool expanded = false;       // the window starts open (else collapsed: it covers the viewport)
+    bool expanded = false;       // open (else collapsed to its title bar under the viewport); set to start open
 };
 void draw_compare_panel(InspectorState& state, ComparePanel& panel);
 
@@ -122,7 +122,7 @@ struct StabilityPanel {
     gen::CaseTableOptions options;       // methods and reference lines of the table
     std::optional<gen::CaseTable> table; // the last run
     std::string message;                 // the last error
-    bool expanded = false;               // the window starts collapsed (it covers the viewport)
+    bool expanded = false;               // open (else collapsed to its title bar under the viewport); set to start open
 };
 void draw_stability_panel(InspectorState& state, StabilityPanel& panel);
 

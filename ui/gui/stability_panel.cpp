@@ -59,7 +59,9 @@ void draw_grid(InspectorState& state, StabilityPanel& panel, const gen::CaseTabl
 
 void draw_stability_panel(InspectorState& state, StabilityPanel& panel)
 {
-    if (!ImGui::Begin("Stability")) {
+    const bool drawn = ImGui::Begin("Stability");
+    panel.expanded = !ImGui::IsWindowCollapsed(); // the tiling gives it room next frame
+    if (!drawn) {
         ImGui::End();
         return;
     }
