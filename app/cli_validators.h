@@ -3,13 +3,25 @@
 #pragma once
 
 #include "app/argument_parsers.h"
+#include "visibility/methods/vis_method.h"
 
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pvs::app {
+
+// The registry's methods that bake: the choices of every --method or --bake that bakes.
+inline std::vector<std::string> baking_method_choices()
+{
+    std::vector<std::string> names;
+    for (const VisMethod& m : vis_methods())
+        if (m.bakes)
+            names.emplace_back(m.name);
+    return names;
+}
 
 inline CLI::Validator camera_validator()
 {

@@ -13,20 +13,6 @@
 
 namespace pvs::app {
 
-namespace {
-
-// --method's choices: the registry's baking methods.
-std::vector<std::string> baking_method_list()
-{
-    std::vector<std::string> names;
-    for (const VisMethod& m : vis_methods())
-        if (m.bakes)
-            names.emplace_back(m.name);
-    return names;
-}
-
-} // namespace
-
 void register_bake_command(CLI::App& app, int& exit_code)
 {
     auto o = std::make_shared<BakeOptions>();
@@ -69,7 +55,7 @@ void register_bake_command(CLI::App& app, int& exit_code)
                     "reference (sampled "
                     "sight lines: a lower bound, for judging other PVSs) or raster (cube "
                     "maps rendered from points in each cell, as HateEngine's baker)")
-        ->check(CLI::IsMember(baking_method_list()))
+        ->check(CLI::IsMember(baking_method_choices()))
         ->capture_default_str();
     cmd->add_option("--level", o->level, "portal-full: separating-plane test level 0..4")
         ->check(CLI::Range(0, 4))

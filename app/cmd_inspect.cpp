@@ -96,8 +96,9 @@ void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(c
     cmd->add_flag("--pick-centre", o->pick_centre, "Pick the face at the viewport's centre (as a click would)");
     cmd->add_option("--bsp-node", o->bsp_node, "Select this BSP node in the BSP panel (its plane is highlighted)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--bake", o->bake, "Bake a PVS at start (portal vis on a background thread), as the Bake panel does")
-        ->check(CLI::IsMember({"portal-fast", "portal-full"}));
+    cmd->add_option("--bake", o->bake, "Bake a PVS at start with this method (on a background thread, one thread), as "
+                                       "the Bake panel does")
+        ->check(CLI::IsMember(baking_method_choices()));
     cmd->add_flag("--compare", o->compare, "Run the Compare panel's compare of every method at start, its window open");
     cmd->add_option("--case", o->stability_case,
                     "Open crafted stability case NAME[:METHOD] at its camera, culling with METHOD's PVS (default "

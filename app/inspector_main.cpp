@@ -46,8 +46,7 @@ pvs::gui::InspectorOptions inspector_options(const pvs::app::InspectArguments& a
     options.stability_case = a.stability_case;
     if (!a.bake.empty()) {
         gui::BakeRequest request;
-        request.method = a.bake == "portal-fast" ? VisParams::Method::Fast : VisParams::Method::Full;
-        request.threads = 1;
+        request.method = a.bake;
         options.bake = request;
     }
     return options;

@@ -5,6 +5,7 @@
 #include "ui/gui/bake_job.h"
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/pvs_rows.h"
+#include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
 #include "gen/generate_zone.h"
 
@@ -53,8 +54,8 @@ TEST(BakeJob, CompletesWithTheBakersOwnResult)
     BakeJob job;
     EXPECT_EQ(job.status(), JobStatus::Idle);
     gui::BakeRequest request;
-    request.method = VisParams::Method::Full;
-    request.threads = 1;
+    request.method = "portal-full";
+    request.settings.threads = 1;
     ASSERT_TRUE(job.start(zone, request));
     ASSERT_EQ(wait(job), JobStatus::Done) << job.error();
     ASSERT_TRUE(job.result());
@@ -73,6 +74,47 @@ TEST(BakeJob, CompletesWithTheBakersOwnResult)
         for (uint32_t n : gui::portal_neighbours(portals, r))
             EXPECT_TRUE(job.result()->visible(r, n)) << r << " -> " << n;
     }
+}
+
+// The Bake panel offers every method of the registry that bakes: each runs as a job with the
+// request's settings and gives the rows the command line's bake gives (the registry run with the
+// same settings); a name the registry does not know fails the job with the names it has.
+TEST(BakeJob, RunsEveryBakingMethodOfTheRegistry)
+{
+    const Zone zone = tiny_zone();
+    size_t ran = 0;
+    for (const VisMethod& m : vis_methods()) {
+        if (!m.bakes)
+            continue;
+        gui::BakeRequest request;
+        request.method = std::string(m.name);
+        request.settings.samples = 64;
+        request.settings.raster_points = 2;
+        request.settings.raster_resolution = 16;
+        BakeJob job;
+        ASSERT_TRUE(job.start(zone, request)) << m.name;
+        const JobStatus status = wait(job);
+        MethodSettings settings = request.settings;
+        std::optional<MethodRun> direct;
+        try {
+            direct = m.run(zone, settings);
+        } catch (const std::exception& e) {
+            EXPECT_EQ(status, JobStatus::Failed) << m.name << ": the command line refuses it (" << e.what() << ")";
+            EXPECT_EQ(job.error(), e.what()) << m.name;
+            continue;
+        }
+        ASSERT_EQ(status, JobStatus::Done) << m.name << ": " << job.error();
+        ASSERT_TRUE(job.result() && direct->pvs) << m.name;
+        EXPECT_EQ(all_rows(*job.result()), all_rows(*direct->pvs)) << m.name;
+        ++ran;
+    }
+    EXPECT_GE(ran, 5u) << "portal-fast, portal-full, clustered, reference and raster bake a generated zone";
+    gui::BakeRequest unknown;
+    unknown.method = "no-such-method";
+    BakeJob job;
+    ASSERT_TRUE(job.start(zone, unknown));
+    EXPECT_EQ(wait(job), JobStatus::Failed);
+    EXPECT_NE(job.error().find("portal-full"), std::string::npos) << job.error();
 }
 
 TEST(BakeJob, RefusesASecondStartWhileRunning)
@@ -102,8 +144,8 @@ TEST(BakeJob, CancelAtTheFirstProgressKeepsNothing)
     BakeJob job;
     job.on_progress = [&job](double) { job.cancel(); };
     gui::BakeRequest request;
-    request.method = VisParams::Method::Full;
-    request.threads = 2;
+    request.method = "portal-full";
+    request.settings.threads = 2;
     ASSERT_TRUE(job.start(zone, request));
     EXPECT_EQ(wait(job), JobStatus::Cancelled);
     EXPECT_FALSE(job.result());
@@ -135,7 +177,7 @@ TEST(InspectorBake, BakedPvsBecomesASourceAndTheCullerUsesIt)
     EXPECT_FALSE(state.frame().pvs_used);
 
     gui::BakeRequest request;
-    request.method = VisParams::Method::Fast;
+    request.method = "portal-fast";
     ASSERT_TRUE(state.start_bake(request));
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
     while (!state.baked_pvs() && std::chrono::steady_clock::now() < deadline) {
@@ -168,7 +210,7 @@ TEST(InspectorBake, OpeningAZoneWhileBakingStopsTheBake)
     state.open_demo();
     state.bake_job().on_progress = [](double) { std::this_thread::sleep_for(std::chrono::milliseconds(5)); };
     gui::BakeRequest request;
-    request.method = VisParams::Method::Full;
+    request.method = "portal-full";
     ASSERT_TRUE(state.start_bake(request));
     state.open_demo(); // must not leave the worker reading the old zone
     EXPECT_NE(state.bake_job().status(), JobStatus::Running);

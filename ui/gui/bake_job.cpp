@@ -2,6 +2,7 @@
 
 #include "visibility/methods/vis_method.h"
 
+#include <stdexcept>
 #include <utility>
 
 namespace pvs::gui {
@@ -25,11 +26,12 @@ bool BakeJob::start(const Zone& zone, const BakeRequest& request)
     request_ = request;
     return job_.start(
         [this, &zone, request](JobControl& control) {
-            const VisMethod& method =
-                *find_vis_method(request.method == VisParams::Method::Fast ? "portal-fast" : "portal-full");
-            MethodSettings settings;
-            settings.level = request.level;
-            settings.threads = request.threads;
+            const VisMethod* method = find_vis_method(request.method);
+            if (!method || !method->bakes)
+                throw std::invalid_argument("no method that bakes is called '" + request.method +
+                                            "' (they are: " + baking_method_names() + ")");
+            MethodSettings settings = request.settings;
+            settings.portals = nullptr;
             settings.progress = [this, &control](double fraction) {
                 control.set_progress(fraction);
                 if (on_progress)
@@ -38,7 +40,8 @@ bool BakeJob::start(const Zone& zone, const BakeRequest& request)
             };
             // A map extruded from 2-D bakes on its column portals, never on a file's.
             std::optional<PortalInput> own;
-            if (zone.portals && !zone.tree.has_height_nodes()) {
+            const bool portal_method = request.method == "portal-fast" || request.method == "portal-full";
+            if (portal_method && request.zone_portals && zone.portals && !zone.tree.has_height_nodes()) {
                 own.emplace();
                 own->portals = *zone.portals;
                 own->source = "the zone's portal file";
@@ -46,7 +49,7 @@ bool BakeJob::start(const Zone& zone, const BakeRequest& request)
             }
             Output out;
             if (!control.cancel_requested())
-                out.run = method.run(zone, settings);
+                out.run = method->run(zone, settings);
             else
                 out.run.cancelled = true;
             return out;

@@ -1,6 +1,7 @@
-// A PVS bake on a background thread, for the inspector's Bake panel: the registry's portal-fast
-// or portal-full (visibility/methods/vis_method.h), on the zone's own portals when it carries
-// them (a Quake map's .prt beside it), else on the portals the method builds from the tree, as a
+// A PVS bake on a background thread, for the inspector's Bake panel: any method of the registry
+// that bakes (visibility/methods/vis_method.h) with the request's settings; portal-fast and
+// portal-full on the zone's own portals when it carries them (a Quake map's .prt beside it) and
+// the request asks for them, else on the portals the method builds from the tree; as a
 // BackgroundJob (background_job.h: its states, progress, cancel and lifetime rules). Done when
 // the bake ran to the end: result() holds the PVS; a cancelled bake's PVS is only conservative
 // and is not offered, but its report() (the method's run: summary, fields, cancelled) is kept.
@@ -22,9 +23,18 @@
 namespace pvs::gui {
 
 struct BakeRequest {
-    VisParams::Method method = VisParams::Method::Fast;
-    int level = 4;        // Full: separator test level 0 .. 4
-    unsigned threads = 1; // worker threads of the baker (0 = all cores)
+    std::string method = "portal-fast"; // a registry method that bakes; another fails the job
+    // What the method reads of them (level, passages, samples, raster settings, heights, ...);
+    // threads 1 by default, progress and portals are the job's.
+    MethodSettings settings = one_thread();
+    bool zone_portals = true; // portal-fast / portal-full: the zone's own portals when it has them
+
+    static MethodSettings one_thread()
+    {
+        MethodSettings s;
+        s.threads = 1;
+        return s;
+    }
 };
 
 class BakeJob {

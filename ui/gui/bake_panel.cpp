@@ -1,5 +1,6 @@
-// The bake panel: method, separator level and threads for a portal-vis bake of the open zone,
-// run on a background thread (BakeJob) with a progress bar and a cancel; the result becomes the
+// The bake panel: any baking method of the registry with the settings it reads (level, passages,
+// portals from the file or the tree, heights, reference lines, raster density, threads), run on
+// a background thread (BakeJob) with a progress bar and a cancel; the result becomes the
 // "baked" PVS source of the Culling panel, and is compared with the zone file's own PVS: for
 // the shown region, the regions only one of them lets it see (file only in red, baked only in
 // green), and the totals over the whole zone.
@@ -18,25 +19,76 @@ namespace {
 const ImVec4 kOnlyFileColor{1.0f, 0.45f, 0.4f, 1.0f};
 const ImVec4 kOnlyBakedColor{0.45f, 1.0f, 0.45f, 1.0f};
 
+// The registry's baking methods in a combo, its description as the tooltip.
+void draw_method_choice(BakeRequest& r)
+{
+    ImGui::SetNextItemWidth(-80.0f);
+    if (ImGui::BeginCombo("method", r.method.c_str())) {
+        for (const VisMethod& m : vis_methods()) {
+            if (!m.bakes)
+                continue;
+            if (ImGui::Selectable(std::string(m.name).c_str(), r.method == m.name))
+                r.method = std::string(m.name);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("%.*s", int(m.description.size()), m.description.data());
+        }
+        ImGui::EndCombo();
+    }
+}
+
+// An unsigned setting through an int field, kept within [low, high].
+template <typename Unsigned>
+void input_unsigned(const char* label, Unsigned& value, int low, int high)
+{
+    int v = int(std::min<Unsigned>(value, Unsigned(high)));
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::InputInt(label, &v))
+        value = Unsigned(std::clamp(v, low, high));
+}
+
+// The settings the chosen method reads (vis_method.h), nothing else.
+void draw_method_settings(const Zone& zone, BakeRequest& r)
+{
+    MethodSettings& s = r.settings;
+    const bool portal = r.method == "portal-fast" || r.method == "portal-full";
+    if (r.method == "portal-full" || r.method == "clustered") {
+        ImGui::SetNextItemWidth(120.0f);
+        ImGui::SliderInt("level", &s.level, 0, 4);
+        ImGui::Checkbox("passages", &s.passages);
+        ImGui::SameLine();
+        ImGui::Checkbox("target checks", &s.target_checks);
+    }
+    if (portal && zone.portals && !zone.tree.has_height_nodes()) {
+        int from_file = r.zone_portals ? 1 : 0;
+        ImGui::TextUnformatted("portals");
+        ImGui::SameLine();
+        ImGui::RadioButton("file", &from_file, 1);
+        ImGui::SameLine();
+        ImGui::RadioButton("tree", &from_file, 0);
+        r.zone_portals = from_file == 1;
+    }
+    if (portal && zone.tree.has_height_nodes())
+        ImGui::Checkbox("heights block sight (static maps only)", &s.heights);
+    if (r.method == "reference") {
+        input_unsigned("lines/region (0: converge)", s.samples, 0, 1 << 24);
+        input_unsigned("seed", s.seed, 1, 1 << 30);
+    }
+    if (r.method == "raster") {
+        input_unsigned("pixels per face side", s.raster_resolution, 8, 1024);
+        input_unsigned("points per region", s.raster_points, 1, 4096);
+    }
+    int threads = int(s.threads);
+    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+    ImGui::SetNextItemWidth(120.0f);
+    if (ImGui::SliderInt("threads", &threads, 1, cores))
+        s.threads = unsigned(std::clamp(threads, 1, cores));
+}
+
 void draw_request(InspectorState& state, BakePanel& panel)
 {
     BakeRequest& r = panel.request;
-    int method = r.method == VisParams::Method::Fast ? 0 : 1;
-    ImGui::RadioButton("portal-fast", &method, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("portal-full", &method, 1);
-    r.method = method == 0 ? VisParams::Method::Fast : VisParams::Method::Full;
-    if (r.method == VisParams::Method::Full) {
-        ImGui::SetNextItemWidth(100.0f);
-        ImGui::SliderInt("level", &r.level, 0, 4);
-        ImGui::SameLine();
-    }
-    int threads = int(r.threads);
-    const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
-    ImGui::SetNextItemWidth(100.0f);
-    if (ImGui::SliderInt("threads", &threads, 1, cores))
-        r.threads = unsigned(std::clamp(threads, 1, cores));
-
+    draw_method_choice(r);
+    draw_method_settings(state.zone(), r);
     BakeJob& job = state.bake_job();
     if (job.status() == JobStatus::Running) {
         if (ImGui::Button("Cancel"))

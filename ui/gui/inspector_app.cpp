@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
@@ -209,9 +210,13 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
 
         ImGui_ImplOpenGL3_NewFrame();
         ImGui_ImplGlfw_NewFrame();
-        ImGui::NewFrame();
-        // Scripted frames get a fixed time step, so a screenshot does not depend on the machine.
+        // Scripted frames get a fixed time step, so a screenshot does not depend on the machine,
+        // and no mouse: nobody holds it (Xvfb's pointer rests mid-screen, where its hover text
+        // would cover the picture).
         const bool scripted = !options.screenshot.empty() || options.report_fps;
+        if (scripted)
+            ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+        ImGui::NewFrame();
         draw_inspector(state, panels, scripted ? 1.0f / 30.0f : ImGui::GetIO().DeltaTime);
         ImGui::Render();
 

@@ -299,7 +299,9 @@ void InspectorState::poll_bake()
     if (bake_.status() != JobStatus::Running || bake_.poll() != JobStatus::Done)
         return;
     baked_pvs_ = bake_.take_result();
-    baked_label_ = bake_.request().method == VisParams::Method::Fast ? "portal-fast" : "portal-full";
+    const VisMethod* method = find_vis_method(bake_.request().method);
+    const std::string settings = method ? method->label(bake_.request().settings) : std::string();
+    baked_label_ = bake_.request().method + (settings.empty() ? "" : " " + settings);
     baked_summary_ = bake_.report().summary;
     ++pvs_generation_;
     if (pvs_source_ == PvsSource::Baked)
