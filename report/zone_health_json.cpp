@@ -23,6 +23,18 @@ void add_blocked(const char* source, const CrossingReport& r, nlohmann::json& ou
                        {"blocked_at", vec(c.blocked_at)}});
 }
 
+// Where each example is: its region, the other region of a pair, its point (null when none).
+nlohmann::json places_json(const CheckItem& item)
+{
+    nlohmann::json places = nlohmann::json::array();
+    for (const CheckPlace& p : item.places)
+        places.push_back({{"region", p.region >= 0 ? nlohmann::json(p.region) : nlohmann::json(nullptr)},
+                          {"other", p.other >= 0 ? nlohmann::json(p.other) : nlohmann::json(nullptr)},
+                          {"point", p.has_point ? nlohmann::json::array({p.point.x, p.point.y, p.point.z})
+                                                : nlohmann::json(nullptr)}});
+    return places;
+}
+
 } // namespace
 
 nlohmann::json zone_health_json(const Zone& zone, const ZoneHealth& health)
@@ -36,7 +48,8 @@ nlohmann::json zone_health_json(const Zone& zone, const ZoneHealth& health)
                           {"checked", item.checked},
                           {"failed", item.failed},
                           {"summary", item.summary},
-                          {"examples", item.examples}});
+                          {"examples", item.examples},
+                          {"places", places_json(item)}});
     nlohmann::json blocked = nlohmann::json::array();
     add_blocked("tree", health.tree_crossings, blocked);
     add_blocked("file", health.file_crossings, blocked);

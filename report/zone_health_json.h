@@ -2,7 +2,8 @@
 // prints. Field names are stable: scripts read them.
 //   { "file", "format", "regions", "errors", "warnings", "healthy",
 //     "checks": [ { "name", "severity", "applicable", "passed", "checked", "failed", "summary",
-//                   "examples": [...] } ],
+//                   "examples": [...], "places": [ { "region", "other", "point": [x,y,z] } ] } ],
+//     (one place per example, each field null when the failure has none),
 //     "crossings": { "tree": {"portals", "traced", "open", "blocked", "unplaced", "opaque"},
 //                    "file": {...} | null },
 //     "blocked_crossings": [ { "source": "tree"|"file", "portal", "regions": [front, back],

@@ -104,7 +104,14 @@ TEST(ZoneCheck, ASliverOfSolidAlongAPortalIsABlockedCrossing)
     EXPECT_NEAR(b.centre.y, 0.0, 1e-3);
     EXPECT_NEAR(b.blocked_at.x, 0.0, 1e-4);
     EXPECT_EQ(health.errors(), 1u);
-    EXPECT_FALSE(health.item("portal_crossings")->passed());
+    const CheckItem& crossings = *health.item("portal_crossings");
+    EXPECT_FALSE(crossings.passed());
+    // Its place: the portal's two regions and its centre, where a viewer goes to look.
+    ASSERT_EQ(crossings.places.size(), 1u);
+    EXPECT_EQ(crossings.places[0].region, b.regions[0]);
+    EXPECT_EQ(crossings.places[0].other, b.regions[1]);
+    ASSERT_TRUE(crossings.places[0].has_point);
+    EXPECT_EQ(crossings.places[0].point, glm::vec3(b.centre));
 }
 
 TEST(ZoneCheck, TheSamePlaneLeavesTheCrossingOpen)
@@ -116,6 +123,8 @@ TEST(ZoneCheck, TheSamePlaneLeavesTheCrossingOpen)
     EXPECT_TRUE(health.item("tree")->passed());
     EXPECT_FALSE(health.item("pvs_rows")->applicable);
     EXPECT_EQ(health.item("faces")->failed, 2u); // neither region lists a face
+    ASSERT_EQ(health.item("faces")->places.size(), 2u);
+    EXPECT_EQ(health.item("faces")->places[1].region, 1);
 }
 
 TEST(ZoneCheck, ABrokenTreeIsAnErrorAndIsNotPortalized)
@@ -243,7 +252,11 @@ TEST(ZoneCheck, ARowWithoutItsPortalNeighbourIsAWarning)
     EXPECT_EQ(health.warnings(), 1u);
     EXPECT_EQ(health.item("pvs_neighbours")->failed, 1u);
     EXPECT_EQ(health.item("pvs_neighbours")->examples.at(0), "0 -> 1");
+    ASSERT_EQ(health.item("pvs_neighbours")->places.size(), 1u) << "one place per example";
+    EXPECT_EQ(health.item("pvs_neighbours")->places[0].region, 0);
+    EXPECT_EQ(health.item("pvs_neighbours")->places[0].other, 1);
     EXPECT_EQ(health.item("pvs_symmetry")->failed, 1u) << "1 sees 0, 0 does not see 1";
+    EXPECT_EQ(health.item("pvs_symmetry")->places.at(0).region, 1);
     EXPECT_TRUE(health.item("pvs_self")->passed());
 }
 

@@ -146,6 +146,7 @@ void InspectorState::adopt_zone(std::unique_ptr<Zone> zone, double load_ms)
     // before it goes.
     bake_.stop();
     compare_.stop();
+    check_.stop();
     if (portal_build_.valid())
         portal_build_.wait(); // it reads the zone about to go
     portal_build_ = {};
@@ -305,6 +306,7 @@ const CullStats& InspectorState::frame()
 
     poll_bake();
     compare_.poll();
+    check_.poll();
     take_finished_portals();
     take_finished_explanation();
     ++frame_number_; // first: the overlays' per-frame caches key on it

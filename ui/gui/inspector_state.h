@@ -23,23 +23,25 @@
 // state); owns one SoftwareRenderer (see its header for what creating one does).
 #pragma once
 
-#include "ui/gui/bake_job.h"
-#include "ui/gui/compare_job.h"
-#include "ui/gui/frame_history.h"
 #include "render/overlay_layer.h"
 #include "render/picture_occlusion.h"
 #include "render/software_renderer.h"
 #include "render/zone_overlays.h"
+#include "ui/gui/background_job.h"
+#include "ui/gui/bake_job.h"
+#include "ui/gui/compare_job.h"
+#include "ui/gui/frame_history.h"
 #include "visibility/camera.h"
 #include "visibility/culler.h"
-#include "visibility/face_regions.h"
 #include "visibility/eval/pair_explanation.h"
+#include "visibility/eval/zone_check.h"
+#include "visibility/face_regions.h"
 #include "visibility/geometry/winding.h"
-#include "visibility/region_lookup.h"
 #include "visibility/pvs_edits.h"
+#include "visibility/region_lookup.h"
 #include "visibility/zone.h"
-#include "wld/zone_file.h"
 #include "visibility/zone_stats.h"
+#include "wld/zone_file.h"
 
 #include <cstdint>
 #include <future>
@@ -222,6 +224,15 @@ public:
     void set_memory_probe(std::optional<ui::PeakMemoryProbe> probe) { memory_probe_ = std::move(probe); }
     bool start_compare(const ui::CompareOptions& options);
     bool use_compared_pvs(size_t row);
+
+    // The Health section's job: `pvscope check` over the open zone (visibility/eval/zone_check.h)
+    // on a background thread; its output is the report. go_to_check_place moves the camera to a
+    // failure's place: its point when it has one, else into its region, and selects the region.
+    using CheckJob = BackgroundJob<ZoneHealth>;
+    CheckJob& check_job() { return check_; }
+    const CheckJob& check_job() const { return check_; }
+    bool start_check(const CheckOptions& options = {});
+    void go_to_check_place(const CheckPlace& place);
     const std::string& baked_label() const { return baked_label_; }
 
     // ---- PVS editing (pvs_editing.cpp) --------------------------------------------------------
@@ -376,6 +387,7 @@ private:
     std::vector<std::string> case_missing_; // its truth's pairs the baked PVS lacks
     std::string baked_label_; // what the "baked" source holds: "portal-full level=4 ...", a compare row
     CompareJob compare_;
+    CheckJob check_;
     std::optional<ui::PeakMemoryProbe> memory_probe_;
     std::string baked_summary_;
     uint64_t pvs_generation_ = 0;

@@ -279,6 +279,30 @@ bool InspectorState::start_compare(const ui::CompareOptions& options)
     return compare_.start(*zone_, with_probe);
 }
 
+bool InspectorState::start_check(const CheckOptions& options)
+{
+    if (!zone_)
+        return false;
+    const Zone& zone = *zone_;
+    return check_.start(
+        [&zone, options](JobControl& control) {
+            control.set_stage("checking");
+            return check_zone(zone, options);
+        },
+        [](const ZoneHealth&) { return true; }); // no cancel point: a check runs to its end
+}
+
+void InspectorState::go_to_check_place(const CheckPlace& place)
+{
+    if (zone_ && place.region >= 0 && size_t(place.region) < zone_->region_count()) {
+        select_region(place.region);
+        if (!place.has_point)
+            go_to_region(uint32_t(place.region));
+    }
+    if (place.has_point)
+        view_.position = place.point;
+}
+
 bool InspectorState::use_compared_pvs(size_t row)
 {
     const std::optional<ui::CompareResult>& result = compare_.result();

@@ -46,6 +46,8 @@ struct ZonePanel {
     std::string message;                   // the last export's result
 };
 void draw_zone_panel(InspectorState& state, ZonePanel& panel);
+// Its Health section (health_section.cpp): `check` on the open zone, failures clickable to their place.
+void draw_health_section(InspectorState& state);
 
 // ---- Culling: stage counts and times, history plots, mode switches, lock ------------------------
 struct CullingPanel {

@@ -104,6 +104,7 @@ void draw_zone_panel(InspectorState& state, ZonePanel& panel)
                             : "cannot write " + panel.export_base + ".csv";
     if (!panel.message.empty())
         ImGui::TextDisabled("%s", panel.message.c_str());
+    draw_health_section(state);
     ImGui::End();
 }
 

@@ -26,11 +26,13 @@ struct ItemBuilder {
         item.name = std::move(name);
         item.severity = severity;
     }
-    void fail(const std::string& example)
+    void fail(const std::string& example, const CheckPlace& place = {})
     {
         ++item.failed;
-        if (item.examples.size() < max_examples)
+        if (item.examples.size() < max_examples) {
             item.examples.push_back(example);
+            item.places.push_back(place);
+        }
     }
     CheckItem done(std::string summary)
     {
@@ -111,7 +113,7 @@ void check_tree(const Zone& zone, const CheckOptions& options, std::vector<Check
     for (size_t i = 0; i < region_named.size(); ++i) {
         ++r.item.checked;
         if (!region_named[i])
-            r.fail(format("region %zu", i));
+            r.fail(format("region %zu", i), {int32_t(i)});
     }
     items.push_back(r.done(format("%zu of %zu regions have no leaf in the tree", r.item.failed,
                                   zone.regions.size())));
@@ -127,7 +129,7 @@ void add_crossings(const char* label, const CrossingReport& report, ItemBuilder&
 {
     b.item.checked += report.traced;
     for (const BlockedCrossing& c : report.blocked)
-        b.fail(std::string(label) + " " + crossing_example(c));
+        b.fail(std::string(label) + " " + crossing_example(c), {c.regions[0], c.regions[1], true, glm::vec3(c.centre)});
 }
 
 void check_portals(const Zone& zone, const CheckOptions& options, ZoneHealth& health, const PortalSet& built,
@@ -153,16 +155,18 @@ void check_portals(const Zone& zone, const CheckOptions& options, ZoneHealth& he
         const int32_t region = zone.tree.leaf_region[size_t(leaf)];
         health.leak_regions.push_back(region);
         const Aabb& box = zone.regions[size_t(region)].bounds;
-        leaks.fail(format("leaf %d (region %d, bounds (%g, %g, %g) .. (%g, %g, %g)) reaches the world box", leaf, region,
-                          double(box.min.x), double(box.min.y), double(box.min.z), double(box.max.x), double(box.max.y),
-                          double(box.max.z)));
+        leaks.fail(format("leaf %d (region %d, bounds (%g, %g, %g) .. (%g, %g, %g)) reaches the world box", leaf,
+                          region, double(box.min.x), double(box.min.y), double(box.min.z), double(box.max.x),
+                          double(box.max.y), double(box.max.z)),
+                   {region, -1, true, box.center()});
     }
     leaks.item.checked = zone.regions.size();
     health.items.push_back(leaks.done(format("%zu open leaves reach the world box", stats.leaves_touching_world.size())));
 
     ItemBuilder outside("outside", CheckSeverity::Note, options.max_examples);
     for (int32_t leaf : stats.leaves_touching_outside)
-        outside.fail(format("leaf %d (region %d)", leaf, zone.tree.leaf_region[size_t(leaf)]));
+        outside.fail(format("leaf %d (region %d)", leaf, zone.tree.leaf_region[size_t(leaf)]),
+                     {zone.tree.leaf_region[size_t(leaf)]});
     outside.item.checked = zone.regions.size();
     health.items.push_back(outside.done(format("%zu open leaves share a face with an outside leaf",
                                                stats.leaves_touching_outside.size())));
@@ -175,7 +179,7 @@ void check_faces(const Zone& zone, const CheckOptions& options, std::vector<Chec
     for (uint32_t r = 0; r < zone.regions.size(); ++r) {
         ++b.item.checked;
         if (!offsets_ok || zone.faces_of_region(r).empty())
-            b.fail(format("region %u", r));
+            b.fail(format("region %u", r), {int32_t(r)});
     }
     items.push_back(b.done(format("%zu of %zu regions list no face", b.item.failed, zone.regions.size())));
 }
@@ -214,7 +218,7 @@ void check_pvs(const Zone& zone, const CheckOptions& options, const PortalSet* b
         pvs.decode_row(r, row);
         ++self.item.checked;
         if (!bits::test(row, r))
-            self.fail(format("region %u", r));
+            self.fail(format("region %u", r), {int32_t(r)});
     }
     items.push_back(self.done(format("%zu of %u rows lack their own region", self.item.failed, regions)));
     if (!keep_matrix) {
@@ -235,7 +239,7 @@ void check_pvs(const Zone& zone, const CheckOptions& options, const PortalSet* b
             for (const auto& [from, to] : {std::pair{a, b}, std::pair{b, a}}) {
                 ++item.item.checked;
                 if (!pvs.row_missing(from) && !sees(from, to))
-                    item.fail(format("%u -> %u", from, to));
+                    item.fail(format("%u -> %u", from, to), {int32_t(from), int32_t(to)});
             }
         }
         items.push_back(n.done(format("%zu of %zu directed portal neighbours missing from the rows",
@@ -250,7 +254,7 @@ void check_pvs(const Zone& zone, const CheckOptions& options, const PortalSet* b
         bits::for_each_set(std::span<const uint64_t>(matrix.data() + size_t(a) * words, words), [&](size_t b) {
             ++sym.item.checked;
             if (b < regions && !sees(uint32_t(b), a))
-                sym.fail(format("%u -> %zu", a, b));
+                sym.fail(format("%u -> %zu", a, b), {int32_t(a), int32_t(b)});
         });
     items.push_back(sym.done(format("%zu of %zu set bits have no reverse bit", sym.item.failed,
                                     sym.item.checked)));

@@ -37,6 +37,8 @@
 #include "visibility/portal/media.h"
 #include "visibility/zone.h"
 
+#include <glm/vec3.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -47,6 +49,15 @@ namespace pvs {
 enum class CheckSeverity : uint8_t { Note, Warning, Error };
 const char* check_severity_name(CheckSeverity severity); // "note", "warning", "error"
 
+// Where an example failure is, for a viewer to go to: a region (-1: none), the other region of a
+// pair (-1: none), and a point when the failure has one (a blocked portal crossing).
+struct CheckPlace {
+    int32_t region = -1;
+    int32_t other = -1;
+    bool has_point = false;
+    glm::vec3 point{0.0f};
+};
+
 struct CheckItem {
     std::string name;        // "tree", "portal_crossings", ...
     CheckSeverity severity = CheckSeverity::Note; // what a failure of this check is
@@ -55,6 +66,7 @@ struct CheckItem {
     size_t failed = 0;       // how many failed (0: the check passed)
     std::string summary;     // one line for people
     std::vector<std::string> examples; // the first few failures, for people
+    std::vector<CheckPlace> places;    // where each example is (one per example)
 
     bool passed() const { return failed == 0; }
 };
