@@ -76,8 +76,16 @@ void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(c
     cmd->add_option("--far", o->far, "Far clip distance at start, zone units (EverQuest clips at the zone's far plane / fog distance): the view camera's far plane and the culler's distance stage. 0: none")
         ->capture_default_str()
         ->check(distance_validator(false));
-    cmd->add_flag("--report-fps", o->report_fps,
-                  "Draw --frames frames without vsync, print the frame times (mean, median, p95, fps) and exit");
+    CLI::Option* report_fps =
+        cmd->add_flag("--report-fps", o->report_fps,
+                      "Draw 10 warm-up frames and --frames timed frames without vsync, print the frame times (mean, "
+                      "median, p95, fps) and exit");
+    cmd->add_option("--cameras", o->cameras,
+                    "--report-fps: time one frame from each of N seeded cameras in the zone's open regions (as "
+                    "`walk`), instead of --frames from one, and name the slowest")
+        ->needs(report_fps)
+        ->check(CLI::Range(1u, 100000u));
+    cmd->add_option("--seed", o->seed, "--cameras: their seed")->needs(report_fps)->capture_default_str();
     cmd->add_option("--overlays", o->overlays,
                     "Overlays at start: a comma list of membership (tinted faces), membership-boxes, planes, portals, bounds, zonelines, frustum, cell, "
                     "areaportals (Quake 2); or none")

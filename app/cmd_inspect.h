@@ -32,6 +32,8 @@ struct InspectArguments {
     std::string cull = "pvs+frustum";
     float far = 0.0f; // > 0: far clip and the culler's distance stage
     bool report_fps = false;
+    uint32_t cameras = 0; // --report-fps over this many seeded cameras, one a frame
+    uint64_t seed = 1;    // their seed
     std::string overlays = "zonelines,frustum,areaportals";
     bool pick_centre = false;
     int bsp_node = -1;

@@ -30,6 +30,8 @@ pvs::gui::InspectorOptions inspector_options(const pvs::app::InspectArguments& a
     options.cull_mode = parse_cull_mode(a.cull).value_or(CullMode::PvsFrustum);
     options.far_clip = a.far;
     options.report_fps = a.report_fps;
+    options.cameras = a.cameras;
+    options.camera_seed = a.seed;
     options.overlays = app::parse_overlays(a.overlays).value_or(ui::OverlaySettings{});
     options.overlays.hidden_lines = a.hidden_lines == "hidden"  ? ui::HiddenLines::Hidden
                                     : a.hidden_lines == "shown" ? ui::HiddenLines::Shown

@@ -5,7 +5,9 @@
 //
 // Modes:
 //  - Textured: the materials' pixels (nearest texel, mipmapped), modulated by a fixed fake
-//    light from the face normal so walls stay apart; materials without pixels get a flat colour.
+//    light from the face normal so walls stay apart; materials without pixels get a flat colour,
+//    and those and materials of one colour (stand-ins: Quake 2's textures live outside the map)
+//    a stronger light by normal (zone_scene.cpp), their only cue for walls, floors and ceilings.
 //  - RegionColors: every face in the flat colour of the first visible region (ascending id) that
 //    lists it; region_color(region) is stable across runs and machines.
 //  - IdBuffer: every pixel holds face id + 1 (0 = background), see encode_id below. Exact: no

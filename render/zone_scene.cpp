@@ -48,6 +48,22 @@ float fake_light(const glm::vec3& normal)
     return 0.62f + 0.38f * (0.5f + 0.5f * glm::dot(normal, light));
 }
 
+// A material of one colour, or none: a stand-in where the texture is not at hand (Quake 2 keeps
+// its .wal textures outside the map). Nothing on such a face tells a wall from the floor or the
+// ceiling but its light, so it is shaded more strongly by its normal: a factor in [0.35, 1]
+// (a floor near 0.95, a ceiling 0.4, walls 0.5 to 0.85 by the way they face).
+bool one_colour(const Material* material)
+{
+    return !material || material->pixels.empty() ||
+           (material->pixels.palettized() && material->pixels.palette_size() == 1);
+}
+
+float flat_light(const glm::vec3& normal)
+{
+    const glm::vec3 light = glm::normalize(glm::vec3(0.45f, 0.3f, 0.84f));
+    return 0.35f + 0.65f * (0.5f + 0.5f * glm::dot(normal, light));
+}
+
 SColor scaled(SColor c, float factor)
 {
     auto channel = [factor](uint32_t v) { return uint32_t(std::lround(std::clamp(float(v) * factor, 0.0f, 255.0f))); };
@@ -234,7 +250,7 @@ void ZoneScene::build_faces()
         slot.vertex_count = uint32_t(used.size());
         slot.first_index = uint32_t(batch.indices.size());
         slot.index_count = 3 * face.triangle_count;
-        slot.light = fake_light(normal);
+        slot.light = one_colour(material) ? flat_light(normal) : fake_light(normal);
         slot.base_color =
             batch.texture ? SColor(255, 255, 255, 255) : flat_material_color(material ? material->name : "");
         slot.textured_color = scaled(slot.base_color, slot.light);

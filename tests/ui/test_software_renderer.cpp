@@ -153,6 +153,32 @@ TEST(IdColours, RegionColoursAreOddNeverBackgroundAndMostlyDistinct)
     EXPECT_GE(seen.size(), 1995u);
 }
 
+// A material of one colour (or none: two_rooms' "plain") carries no cue but its light, so the
+// textured picture shades it strongly by the face's normal: the floor (facing up) against the door
+// wall (facing -x) and the two side walls (facing +y and -y) stand well apart. The fake light that
+// textured materials get (0.62..1) left these at 1.32 and 1.15.
+TEST(SoftwareRenderer, OneColourFacesAreShadedApartByTheirNormal)
+{
+    const Zone zone = two_rooms();
+    SoftwareRenderer renderer(160, 120);
+    const Image ids = renderer.render(zone, camera_in_room_a(), {0, 1}, RenderMode::IdBuffer);
+    const Image picture = renderer.render(zone, camera_in_room_a(), {0, 1}, RenderMode::Textured);
+    std::map<uint32_t, std::pair<double, size_t>> brightness; // face -> (sum of r+g+b, pixels)
+    for (uint32_t y = 0; y < ids.height; ++y)
+        for (uint32_t x = 0; x < ids.width; ++x) {
+            const uint32_t face = ui::face_at(ids, x, y);
+            const uint8_t* p = picture.pixel(x, y);
+            brightness[face].first += double(p[0]) + p[1] + p[2];
+            ++brightness[face].second;
+        }
+    const auto mean = [&](uint32_t face) {
+        const auto& [sum, n] = brightness.at(face);
+        return sum / double(n);
+    };
+    EXPECT_GE(mean(0) / mean(5), 1.6) << "floor against the door wall";
+    EXPECT_GE(mean(2) / mean(3), 1.2) << "the wall facing +y against the one facing -y";
+}
+
 TEST(RenderModes, NamesRoundTrip)
 {
     for (RenderMode m : {RenderMode::Textured, RenderMode::RegionColors, RenderMode::IdBuffer})

@@ -1,5 +1,7 @@
 #include "ui/gui/inspector_app.h"
 
+#include "ui/gui/fps_report.h"
+
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/panels.h"
 
@@ -28,6 +30,9 @@
 namespace pvs::gui {
 
 namespace {
+
+// --report-fps: frames drawn before the timed ones (the windows sized, the scene built).
+constexpr size_t kWarmupFrames = 10;
 
 void glfw_error(int code, const char* description) { std::fprintf(stderr, "pvscope: GLFW error %d: %s\n", code, description); }
 
@@ -133,47 +138,9 @@ bool save_window_png(GLFWwindow* window, const std::string& path)
     return stbi_write_png(path.c_str(), width, height, 3, top_down.data(), int(row)) != 0;
 }
 
-// Whole-frame wall times of a --report-fps run, and the summary it prints.
-struct FrameTimer {
-    std::vector<double> frame_ms, render_ms, cull_us;
-    std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
-
-    void lap(const InspectorState& state)
-    {
-        const auto now = std::chrono::steady_clock::now();
-        frame_ms.push_back(std::chrono::duration<double, std::milli>(now - last).count());
-        last = now;
-        render_ms.push_back(state.last_render().draw_ms);
-        const CullStats& c = state.last_cull();
-        cull_us.push_back(c.cull_us());
-    }
-    void print(const InspectorState& state) const
-    {
-        // The first frames size the windows and build the scene: left out.
-        const size_t skip = std::min<size_t>(frame_ms.size() / 10 + 1, 10);
-        if (frame_ms.size() <= skip)
-            return;
-        auto stats = [skip](std::vector<double> v) {
-            v.erase(v.begin(), v.begin() + long(skip));
-            std::sort(v.begin(), v.end());
-            double sum = 0;
-            for (double x : v)
-                sum += x;
-            return std::array<double, 3>{sum / double(v.size()), v[v.size() / 2], v[v.size() * 95 / 100]};
-        };
-        const auto f = stats(frame_ms), r = stats(render_ms), c = stats(cull_us);
-        std::printf("pvscope: %zu frames timed (%zu warm-up left out), viewport %ux%u, cull %s\n"
-                    "  frame  mean %.2f ms (%.1f fps), median %.2f ms, p95 %.2f ms\n"
-                    "  render mean %.2f ms, median %.2f ms; cull mean %.1f us; %u of %u regions drawn (last frame)\n",
-                    frame_ms.size() - skip, skip, state.image().width, state.image().height,
-                    cull_mode_name(state.cull_mode), f[0], 1000.0 / f[0], f[1], f[2], r[0], r[1], c[0],
-                    state.last_cull().regions_after_frustum, state.last_cull().regions_total);
-    }
-};
-
 int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& options)
 {
-    FrameTimer timer;
+    FpsReport fps(kWarmupFrames);
     ViewportTexture texture;
     InspectorPanels panels;
     panels.viewport.upload = [&texture](const ui::Image& image) { return texture.upload(image); };
@@ -216,6 +183,10 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         const bool scripted = !options.screenshot.empty() || options.report_fps;
         if (scripted)
             ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+        if (options.report_fps && options.cameras > 0 && !fps.flying() && state.has_zone())
+            fps.plan_flight(state, options.cameras, options.camera_seed);
+        if (fps.flying())
+            state.view_camera() = fps.next_camera();
         ImGui::NewFrame();
         draw_inspector(state, panels, scripted ? 1.0f / 30.0f : ImGui::GetIO().DeltaTime);
         ImGui::Render();
@@ -238,9 +209,9 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         if (options.report_fps) {
             glfwSwapBuffers(platform.window);
             glFinish();
-            timer.lap(state);
-            if (++frames >= options.frames) {
-                timer.print(state);
+            fps.lap(state);
+            if (size_t(++frames) >= fps.frames_needed(size_t(options.frames))) {
+                fps.print(state);
                 if (!options.screenshot.empty() && !save_window_png(platform.window, options.screenshot))
                     return 1;
                 return 0;

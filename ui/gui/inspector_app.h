@@ -31,9 +31,14 @@ struct InspectorOptions {
     // to this PNG and return, without waiting for the user. For tests and the README.
     std::string screenshot;
     int frames = 5;
-    // When set: draw `frames` frames as fast as they go (no vsync), print the frame times
+    // When set: draw 10 warm-up frames and `frames` timed ones as fast as they go (no vsync), print the frame times
     // (whole frames: cull, render, upload, ImGui, swap) and return. For docs/performance.md.
     bool report_fps = false;
+    // report_fps: draw each timed frame from the next of `cameras` seeded cameras
+    // (random_cameras_in_regions with camera_seed) instead of `frames` frames from one, and name
+    // the slowest (fps_report.h).
+    uint32_t cameras = 0;
+    uint64_t camera_seed = 1;
     ui::OverlaySettings overlays;
     bool pick_centre = false; // pick the face at the viewport's centre on the first frame
     int32_t bsp_node = -1;    // the BSP panel's selected node at start (-1: none)

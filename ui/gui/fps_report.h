@@ -1,0 +1,43 @@
+// The whole-frame times of a scripted `inspect --report-fps` run, and the summary it prints:
+// frame (cull, render, upload, ImGui, swap), render and cull times as mean, median and p95. With
+// a flight (`--cameras N`) each timed frame is drawn from the next of N seeded cameras
+// (random_cameras_in_regions) after the warm-up frames, and the summary names the slowest camera,
+// so a slow view can be opened again with --camera.
+#pragma once
+
+#include "visibility/camera.h"
+
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace pvs::gui {
+
+class InspectorState;
+
+class FpsReport {
+public:
+    // `warmup` frames (the windows are sized and the scene built) are drawn but not reported.
+    explicit FpsReport(size_t warmup) : warmup_(warmup) {}
+
+    // The camera flight, made on the open zone from its view camera's lens; none when count is 0.
+    void plan_flight(const InspectorState& state, uint32_t count, uint64_t seed);
+    bool flying() const { return !flight_.empty(); }
+    // The camera for the frame about to be drawn (the first one during the warm-up).
+    const Camera& next_camera() const;
+    // Frames to draw in all: the warm-up and one a camera, or the warm-up and `frames`.
+    size_t frames_needed(size_t frames) const { return warmup_ + (flying() ? flight_.size() : frames); }
+
+    // After a frame has been presented.
+    void lap(const InspectorState& state);
+    void print(const InspectorState& state) const;
+
+private:
+    size_t warmup_;
+    std::vector<Camera> flight_;
+    std::vector<double> frame_ms_, render_ms_, cull_us_;
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+} // namespace pvs::gui
