@@ -135,9 +135,17 @@ std::span<const uint64_t> Pvs::dense_row(uint32_t region) const
 
 bool Pvs::visible(uint32_t from, uint32_t to) const
 {
-    std::vector<uint64_t> row(words_per_row_);
-    decode_row(from, row);
-    return bits::test(row, to);
+    assert(from < row_count_);
+    if (to >= region_count_)
+        return false; // a padding bit
+    if (storage_ == Storage::Dense)
+        return bits::test(dense_row(from), to);
+    if (bits::test(missing_, from))
+        return true;
+    // One bit without decoding the row: a column (every row's bit `to`) costs a walk per row.
+    const std::span<const uint8_t> row = std::span<const uint8_t>(compressed_).subspan(row_offsets_[from]);
+    return row[0] == kTagBitRuns ? bit_runs_test(row.subspan(1), region_count_, to)
+                                 : quake_rle_test(row.subspan(1), region_count_, to);
 }
 
 size_t Pvs::memory_bytes() const

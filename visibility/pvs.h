@@ -50,7 +50,8 @@ public:
     void decode_row(uint32_t region, std::span<uint64_t> out) const;
     // Dense storage only: the row in place, with no copy. Empty span for compressed storage.
     std::span<const uint64_t> dense_row(uint32_t region) const;
-    // Convenience for code that is not hot: does `from` see `to`?
+    // Does `from` see `to` (false for `to` past the last region)? One bit, read in place from a
+    // compressed row (no decode of the rest, no allocation).
     bool visible(uint32_t from, uint32_t to) const;
 
     size_t memory_bytes() const;

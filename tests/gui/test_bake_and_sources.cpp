@@ -220,24 +220,36 @@ TEST(InspectorBake, OpeningAZoneWhileBakingStopsTheBake)
 TEST(PvsRows, RowColumnAndDiffMatchPairByPairLookups)
 {
     const uint32_t n = 70; // two words per row
-    auto source = [](uint32_t region, std::span<uint64_t> row) {
+    const auto sees = [](uint32_t from, uint32_t to) { return from == 5 || (from + to) % 3 == 0 || from == to; };
+    auto source = [&](uint32_t region, std::span<uint64_t> row) {
         for (uint32_t to = 0; to < 70; ++to)
-            if ((region + to) % 3 == 0 || region == to)
+            if (sees(region, to))
                 row[to / 64] |= uint64_t(1) << (to % 64);
         return region != 5; // region 5's row is missing: all visible
     };
-    const Pvs pvs = Pvs::build(n, source);
-    for (uint32_t r : {0u, 5u, 69u}) {
-        std::vector<uint32_t> row, column;
-        for (uint32_t t = 0; t < n; ++t) {
-            if (pvs.visible(r, t))
-                row.push_back(t);
-            if (pvs.visible(t, r))
-                column.push_back(t);
+    for (const Pvs::StoragePolicy policy : {Pvs::StoragePolicy::Dense, Pvs::StoragePolicy::Compressed}) {
+        const Pvs pvs = Pvs::build(n, source, policy);
+        for (uint32_t r : {0u, 5u, 69u}) {
+            std::vector<uint32_t> row, column;
+            for (uint32_t t = 0; t < n; ++t) {
+                if (sees(r, t))
+                    row.push_back(t);
+                if (sees(t, r))
+                    column.push_back(t);
+            }
+            EXPECT_EQ(gui::pvs_row_regions(pvs, r), row);
+            EXPECT_EQ(gui::pvs_column_regions(pvs, r), column);
+            // Read a few rows a frame, as the region panel does: the same column.
+            gui::PvsColumnScan scan;
+            scan.restart(r);
+            int slices = 0;
+            while (!scan.step(pvs, 16))
+                ++slices;
+            EXPECT_EQ(slices, 4); // 70 rows, 16 a slice: the fifth call ends it
+            EXPECT_EQ(scan.regions, column);
         }
-        EXPECT_EQ(gui::pvs_row_regions(pvs, r), row);
-        EXPECT_EQ(gui::pvs_column_regions(pvs, r), column);
     }
+    const Pvs pvs = Pvs::build(n, source);
     EXPECT_EQ(gui::pvs_row_regions(pvs, 5).size(), n);
     EXPECT_TRUE(gui::pvs_row_regions(pvs, n).empty());
 

@@ -4,6 +4,7 @@
 // the culling panel's switches reach it.
 #include "tests/gui/headless_imgui.h"
 #include "ui/gui/panels.h"
+#include "visibility/bit_row.h"
 
 #include <gtest/gtest.h>
 
@@ -167,22 +168,27 @@ TEST_F(NullBackend, RegionPanelListsTheRowAndColumnOfTheActivePvs)
     const int32_t region = state.shown_region();
     ASSERT_GE(region, 0);
     EXPECT_EQ(panels.region.lists_region, region);
-    // Independently: the row and column by Pvs::visible, one pair at a time.
+    // Independently: the row and column from whole decoded rows.
     std::vector<uint32_t> row, column;
-    if (const Pvs* pvs = state.active_pvs())
-        for (uint32_t r = 0; r < pvs->region_count(); ++r) {
-            if (pvs->visible(uint32_t(region), r))
+    if (const Pvs* pvs = state.active_pvs()) {
+        std::vector<uint64_t> words(pvs->words_per_row());
+        pvs->decode_row(uint32_t(region), words);
+        for (uint32_t r = 0; r < pvs->region_count(); ++r)
+            if (bits::test(words, r))
                 row.push_back(r);
-            if (pvs->visible(r, uint32_t(region)))
+        for (uint32_t r = 0; r < pvs->region_count(); ++r) {
+            pvs->decode_row(r, words);
+            if (bits::test(words, uint32_t(region)))
                 column.push_back(r);
         }
+    }
     EXPECT_EQ(panels.region.row, row);
-    EXPECT_EQ(panels.region.column, column);
+    EXPECT_EQ(panels.region.column.regions, column); // the demo's column is read in one frame
     // With no PVS source the panel lists nothing.
     ASSERT_TRUE(state.set_pvs_source(gui::PvsSource::None));
     frame([&] { gui::draw_inspector(state, panels, 0.0f); });
     EXPECT_TRUE(panels.region.row.empty());
-    EXPECT_TRUE(panels.region.column.empty());
+    EXPECT_TRUE(panels.region.column.regions.empty());
 }
 
 // The BSP panel is a nested tree with the camera's path open: every node of the path is drawn

@@ -70,6 +70,31 @@ TEST(BitRuns, TruncatedAndOverlongInputIsRefused)
     EXPECT_FALSE(decode_bit_runs(endless, n, out));
 }
 
+// One bit read in place is the bit the whole decode gives, for every bit of every shape, and for
+// input cut short or running past the row (decode_bit_runs' partial row is the known answer).
+TEST(BitRuns, OneBitReadInPlaceIsTheDecodedBit)
+{
+    std::mt19937 rng(5);
+    const size_t n = 3000;
+    for (int shape = 0; shape < 3; ++shape) {
+        std::vector<uint64_t> row = runs_row(n, rng, shape == 0 ? 5 : 200);
+        if (shape == 2)
+            bits::fill(row, n);
+        std::vector<uint8_t> encoded;
+        encode_bit_runs(row, n, encoded);
+        encoded.push_back(0x7f); // an overlong last run: the decoder sets or clears the rest
+        for (size_t cut : {encoded.size() - 1, encoded.size() / 2, encoded.size(), size_t{1}}) {
+            const std::span<const uint8_t> in = std::span(encoded).first(cut);
+            std::vector<uint64_t> decoded(bits::words_for(n));
+            decode_bit_runs(in, n, decoded);
+            for (size_t bit = 0; bit < n; ++bit)
+                ASSERT_EQ(bit_runs_test(in, n, bit), bits::test(decoded, bit))
+                    << shape << " cut " << cut << " bit " << bit;
+            EXPECT_FALSE(bit_runs_test(in, n, n)); // past the row
+        }
+    }
+}
+
 TEST(BitRuns, DenseRowsInLongRunsAreStoredCompressedAndSmall)
 {
     const uint32_t n = 6000;

@@ -61,6 +61,26 @@ TEST(PvsStorage, DenseAndCompressedDecodeTheSameRows)
     }
 }
 
+// visible(from, to) reads one bit of a compressed row in place: it must be the decoded row's bit,
+// in both codecs (sparse rows take Quake RLE, dense runs bit runs) and for missing rows.
+TEST(PvsStorage, OneBitIsTheDecodedRowsBitInEitherStorage)
+{
+    std::vector<BitSet> rows = random_rows(300, 0.03, 4);
+    for (uint32_t r = 0; r < 100; ++r) // dense rows in long runs
+        for (uint32_t c = r; c < 300; c += (c % 50 == 49) ? 30 : 1)
+            rows[r].set(c);
+    for (const Pvs::StoragePolicy policy : {Pvs::StoragePolicy::Dense, Pvs::StoragePolicy::Compressed}) {
+        const Pvs pvs = build(rows, policy, true);
+        std::vector<uint64_t> row(pvs.words_per_row());
+        for (uint32_t r = 0; r < 300; ++r) {
+            pvs.decode_row(r, row);
+            for (uint32_t c = 0; c < 300; ++c)
+                ASSERT_EQ(pvs.visible(r, c), bits::test(row, c)) << r << " " << c;
+            EXPECT_FALSE(pvs.visible(r, 300)); // past the last region
+        }
+    }
+}
+
 TEST(PvsStorage, IdenticalRowsAreStoredOnce)
 {
     std::vector<BitSet> same(4000, BitSet(4000));

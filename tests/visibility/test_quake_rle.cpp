@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 namespace pvs {
 namespace {
 
@@ -76,6 +78,32 @@ TEST(QuakeRle, EncoderSplitsZeroRunsAt255AndNeverRunsPastTheRow)
     encode_quake_rle(zeros, 20, tail);
     EXPECT_EQ(tail, (std::vector<uint8_t>{0x00, 3}));
     EXPECT_LE(out.size(), quake_rle_bound(bit_count));
+}
+
+// One bit read in place is the bit the whole decode gives, for every bit of random rows (sparse
+// ones have zero runs, some past 255 bytes), of rows cut short, and of a run clamped at the row.
+TEST(QuakeRle, OneBitReadInPlaceIsTheDecodedBit)
+{
+    std::mt19937 rng(3);
+    const size_t n = 4100;
+    for (double density : {0.0005, 0.02, 0.5}) {
+        std::vector<uint64_t> row(bits::words_for(n), 0);
+        std::bernoulli_distribution pick(density);
+        for (size_t i = 0; i < n; ++i)
+            if (pick(rng))
+                bits::set(row, i);
+        std::vector<uint8_t> encoded;
+        encode_quake_rle(row, n, encoded);
+        const std::vector<uint8_t> clamped{0x81, 0x00, 0xff, 0x00, 0xff, 0x00, 0xff, 0x44};
+        for (const std::vector<uint8_t>& input :
+             {encoded, std::vector<uint8_t>(encoded.begin(), encoded.begin() + long(encoded.size() / 2)), clamped}) {
+            std::vector<uint64_t> decoded(bits::words_for(n));
+            decode_quake_rle(input, n, decoded);
+            for (size_t bit = 0; bit < n; ++bit)
+                ASSERT_EQ(quake_rle_test(input, n, bit), bits::test(decoded, bit)) << density << " bit " << bit;
+            EXPECT_FALSE(quake_rle_test(input, n, n)); // past the row
+        }
+    }
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 // The whole-frame times of a scripted `inspect --report-fps` run, and the summary it prints:
-// frame (cull, render, upload, ImGui, swap), render and cull times as mean, median and p95. With
+// the frame as mean, median and p95, and where it goes (the median of each phase: cull, the
+// picture, the overlays, the panels, ImGui's GL draw, presentation), with the picture's cost per
+// drawn face. With
 // a flight (`--cameras N`) each timed frame is drawn from the next of N seeded cameras
 // (random_cameras_in_regions) after the warm-up frames, and the summary names the slowest camera,
 // so a slow view can be opened again with --camera.
@@ -29,14 +31,21 @@ public:
     // Frames to draw in all: the warm-up and one a camera, or the warm-up and `frames`.
     size_t frames_needed(size_t frames) const { return warmup_ + (flying() ? flight_.size() : frames); }
 
+    // The main thread's phases of one frame, in ms (InspectorState reports its own).
+    struct Phases {
+        double inspector_ms = 0; // draw_inspector: the panels, and the state's frame() within them
+        double gl_ms = 0;        // ImGui's draw data to GL
+        double present_ms = 0;   // swap and glFinish
+    };
     // After a frame has been presented.
-    void lap(const InspectorState& state);
+    void lap(const InspectorState& state, const Phases& phases);
     void print(const InspectorState& state) const;
 
 private:
     size_t warmup_;
     std::vector<Camera> flight_;
-    std::vector<double> frame_ms_, render_ms_, cull_us_;
+    std::vector<double> frame_ms_, render_ms_, cull_us_, overlay_ms_, panels_ms_, gl_ms_, present_ms_;
+    std::vector<double> faces_; // faces the picture drew
     std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 

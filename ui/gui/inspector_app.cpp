@@ -187,16 +187,25 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
             fps.plan_flight(state, options.cameras, options.camera_seed);
         if (fps.flying())
             state.view_camera() = fps.next_camera();
+        using Clock = std::chrono::steady_clock;
+        const auto ms_since = [](Clock::time_point t) {
+            return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+        };
+        FpsReport::Phases phases;
+        auto phase_start = Clock::now();
         ImGui::NewFrame();
         draw_inspector(state, panels, scripted ? 1.0f / 30.0f : ImGui::GetIO().DeltaTime);
         ImGui::Render();
+        phases.inspector_ms = ms_since(phase_start);
 
+        phase_start = Clock::now();
         int width = 0, height = 0;
         glfwGetFramebufferSize(platform.window, &width, &height);
         glViewport(0, 0, width, height);
         glClearColor(0.08f, 0.08f, 0.09f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+        phases.gl_ms = ms_since(phase_start);
 
         const bool working = state.bake_job().status() == JobStatus::Running ||
                              state.compare_job().status() == JobStatus::Running || state.explanation_running();
@@ -207,9 +216,11 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         if (options.pick_centre && frames == 1)
             state.pick(state.image().width / 2, state.image().height / 2);
         if (options.report_fps) {
+            phase_start = Clock::now();
             glfwSwapBuffers(platform.window);
             glFinish();
-            fps.lap(state);
+            phases.present_ms = ms_since(phase_start);
+            fps.lap(state, phases);
             if (size_t(++frames) >= fps.frames_needed(size_t(options.frames))) {
                 fps.print(state);
                 if (!options.screenshot.empty() && !save_window_png(platform.window, options.screenshot))

@@ -352,15 +352,19 @@ const CullStats& InspectorState::frame()
             image_ = renderer_->render(*zone_, view_, picture_regions_, render_mode, region_tints_);
         else
             image_ = renderer_->render(*zone_, view_, visible_, render_mode);
+        const auto overlays_start = std::chrono::steady_clock::now();
         const bool layered = layer_job.valid();
         if (layered)
             layer_job.get();
         last_render_ = renderer_->last_stats();
         paint_overlays(scene, layered ? &line_layer_ : nullptr);
+        last_overlay_ms_ =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - overlays_start).count();
     } catch (const std::exception& e) { // no renderer, or an ID render of a zone too large to encode
         error_ = e.what();
         image_ = {};
         last_render_ = {};
+        last_overlay_ms_ = 0;
         labels_.clear();
     }
 

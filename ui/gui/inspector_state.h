@@ -168,6 +168,9 @@ public:
     const ui::Image& image() const { return image_; }
     const CullStats& last_cull() const { return last_cull_; }
     const ui::RenderStats& last_render() const { return last_render_; }
+    // The last frame()'s time after the picture was drawn: waiting for the line layer, painting
+    // the other overlays and compositing (ms).
+    double last_overlay_ms() const { return last_overlay_ms_; }
     const std::vector<uint32_t>& visible_regions() const { return visible_; }
     // Counts image_ generations so a texture is uploaded only when the picture changed.
     uint64_t frame_number() const { return frame_number_; }
@@ -352,6 +355,7 @@ private:
     ui::Image image_;
     CullStats last_cull_;
     ui::RenderStats last_render_;
+    double last_overlay_ms_ = 0;
     std::vector<uint32_t> visible_;
     uint64_t frame_number_ = 0;
     FrameHistory history_;

@@ -6,10 +6,11 @@
 // context with fonts built and io.DisplaySize set, no GPU), which the tests do.
 #pragma once
 
+#include "gen/case_table.h"
 #include "ui/gui/file_browser.h"
 #include "ui/gui/inspector_state.h"
+#include "ui/gui/pvs_rows.h"
 #include "ui/gui/recent_files.h"
-#include "gen/case_table.h"
 
 #include <imgui.h>
 
@@ -65,7 +66,7 @@ struct RegionPanel {
     bool lists_neighbours = false; // neighbours were computed (portals were ready)
     bool row_missing = false;      // the region's row was missing in the file (all visible)
     std::vector<uint32_t> row;     // regions it sees, ascending
-    std::vector<uint32_t> column;  // regions that see it, ascending
+    PvsColumnScan column;          // regions that see it, read a slice a frame
     std::vector<uint32_t> neighbours; // regions sharing a portal with it
     // PVS editing: pairs both ways, where the edit list is saved, and the last save's message.
     bool edit_both_ways = true;

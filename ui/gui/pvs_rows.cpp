@@ -26,19 +26,29 @@ std::vector<uint32_t> pvs_row_regions(const Pvs& pvs, uint32_t region)
 
 std::vector<uint32_t> pvs_column_regions(const Pvs& pvs, uint32_t region)
 {
-    std::vector<uint32_t> regions;
     if (region >= pvs.region_count())
-        return regions;
-    std::vector<uint64_t> words(pvs.words_per_row(), 0);
-    const size_t word = region / 64;
-    const uint64_t bit = uint64_t(1) << (region % 64);
-    for (uint32_t r = 0; r < pvs.region_count(); ++r) {
-        std::fill(words.begin(), words.end(), 0);
-        pvs.decode_row(r, words);
-        if (words[word] & bit)
-            regions.push_back(r);
-    }
-    return regions;
+        return {};
+    PvsColumnScan scan;
+    scan.restart(region);
+    scan.step(pvs, pvs.row_count());
+    return std::move(scan.regions);
+}
+
+void PvsColumnScan::restart(uint32_t column)
+{
+    region = column;
+    next_row = 0;
+    regions.clear();
+}
+
+bool PvsColumnScan::step(const Pvs& pvs, uint32_t max_rows)
+{
+    // Bit by bit (Pvs::visible reads one bit of a compressed row without decoding the rest).
+    const uint32_t end = uint32_t(std::min<uint64_t>(pvs.row_count(), uint64_t(next_row) + max_rows));
+    for (; next_row < end; ++next_row)
+        if (pvs.visible(next_row, region))
+            regions.push_back(next_row);
+    return next_row >= pvs.row_count();
 }
 
 std::vector<uint32_t> portal_neighbours(const PortalSet& portals, uint32_t region)

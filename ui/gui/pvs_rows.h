@@ -17,6 +17,20 @@ std::vector<uint32_t> pvs_row_regions(const Pvs& pvs, uint32_t region);
 // Regions that see `region` (its column: every r whose row has it), ascending.
 std::vector<uint32_t> pvs_column_regions(const Pvs& pvs, uint32_t region);
 
+// The same column read a slice of rows at a time, so a panel can spread it over frames: on an
+// open zone it walks 33 k compressed rows (tens of ms), and the region a panel follows changes
+// whenever the camera enters another.
+struct PvsColumnScan {
+    uint32_t region = 0;
+    uint32_t next_row = 0;         // rows below it are read
+    std::vector<uint32_t> regions; // found so far, ascending
+
+    void restart(uint32_t column);
+    // Reads up to `max_rows` more rows of `pvs` (the same PVS every call since restart); true when
+    // every row has been read.
+    bool step(const Pvs& pvs, uint32_t max_rows);
+};
+
 // Regions sharing a portal with `region`, ascending, no duplicates.
 std::vector<uint32_t> portal_neighbours(const PortalSet& portals, uint32_t region);
 

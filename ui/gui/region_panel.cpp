@@ -10,6 +10,8 @@
 
 #include "ui/gui/pvs_rows.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -30,13 +32,12 @@ void update_lists(InspectorState& state, int32_t region, RegionPanel& panel)
     panel.lists_region = region;
     panel.lists_neighbours = neighbours_ready;
     panel.row.clear();
-    panel.column.clear();
+    panel.column.restart(region >= 0 ? uint32_t(region) : UINT32_MAX); // UINT32_MAX: no column
     panel.neighbours.clear();
     panel.row_missing = false;
     if (const Pvs* pvs = state.active_pvs(); pvs && region >= 0 && uint32_t(region) < pvs->region_count()) {
         panel.row_missing = pvs->row_missing(uint32_t(region));
         panel.row = pvs_row_regions(*pvs, uint32_t(region));
-        panel.column = pvs_column_regions(*pvs, uint32_t(region));
     }
     if (neighbours_ready)
         panel.neighbours = portal_neighbours(*state.ready_portals(), uint32_t(region));
@@ -83,9 +84,20 @@ void draw_lists(InspectorState& state, RegionPanel& panel)
         draw_region_list(
             state, "row", panel.row, list_height, [&](uint32_t r) { return editor && editor->edited(region, r); },
             [&](uint32_t r) { return std::pair(region, r); });
-        ImGui::Text("visible from %zu (PVS column)", panel.column.size());
+        // The column, read for at most a millisecond a frame (an open zone's takes tens).
+        const Pvs& pvs = *state.active_pvs();
+        const auto start = std::chrono::steady_clock::now();
+        bool read = panel.column.region >= pvs.region_count();
+        while (!read && std::chrono::steady_clock::now() - start < std::chrono::milliseconds(1))
+            read = panel.column.step(pvs, 512);
+        if (read)
+            ImGui::Text("visible from %zu (PVS column)", panel.column.regions.size());
+        else
+            ImGui::Text("visible from %zu so far (PVS column, %u of %u rows read)", panel.column.regions.size(),
+                        panel.column.next_row, pvs.row_count());
         draw_region_list(
-            state, "column", panel.column, list_height, [&](uint32_t r) { return editor && editor->edited(r, region); },
+            state, "column", panel.column.regions, list_height,
+            [&](uint32_t r) { return editor && editor->edited(r, region); },
             [&](uint32_t r) { return std::pair(r, region); });
     }
     if (!panel.lists_neighbours) {

@@ -91,4 +91,30 @@ bool decode_bit_runs(std::span<const uint8_t> in, size_t bit_count, std::span<ui
     return true;
 }
 
+bool bit_runs_test(std::span<const uint8_t> in, size_t bit_count, size_t bit)
+{
+    if (bit >= bit_count)
+        return false;
+    size_t at = 0, i = 0;
+    bool value = false;
+    while (at < bit_count) {
+        uint64_t run = 0;
+        for (unsigned shift = 0;; shift += 7) {
+            if (i >= in.size() || shift > 63)
+                return false; // decode_bit_runs leaves the rest clear
+            const uint8_t byte = in[i++];
+            run |= uint64_t(byte & 0x7f) << shift;
+            if (!(byte & 0x80))
+                break;
+        }
+        if (run > bit_count - at)
+            return value; // decode_bit_runs sets the rest when the last run overruns set
+        if (bit < at + run)
+            return value;
+        at += run;
+        value = !value;
+    }
+    return false;
+}
+
 } // namespace pvs

@@ -22,4 +22,8 @@ void encode_bit_runs(std::span<const uint64_t> row, size_t bit_count, std::vecto
 // then filled as far as it went and the rest cleared).
 bool decode_bit_runs(std::span<const uint8_t> in, size_t bit_count, std::span<uint64_t> out);
 
+// Bit `bit` (< bit_count) of the row decode_bit_runs would give, read without decoding the rest:
+// the walk stops at the run that holds it.
+bool bit_runs_test(std::span<const uint8_t> in, size_t bit_count, size_t bit);
+
 } // namespace pvs

@@ -30,6 +30,29 @@ QuakeRleResult decode_quake_rle(std::span<const uint8_t> in, size_t bit_count, s
     return {true, pos};
 }
 
+bool quake_rle_test(std::span<const uint8_t> in, size_t bit_count, size_t bit)
+{
+    if (bit >= bit_count)
+        return false;
+    const size_t row_bytes = bits::bytes_for(bit_count), target = bit / 8;
+    size_t produced = 0, pos = 0;
+    while (produced < row_bytes && pos < in.size()) {
+        const uint8_t b = in[pos++];
+        if (b != 0) {
+            if (produced == target)
+                return (b >> (bit % 8)) & 1;
+            ++produced;
+            continue;
+        }
+        if (pos >= in.size())
+            return false;
+        produced += std::min<size_t>(in[pos++], row_bytes - produced);
+        if (produced > target)
+            return false; // inside a zero run
+    }
+    return false; // the row ended early: the rest is zero
+}
+
 void encode_quake_rle(std::span<const uint64_t> row, size_t bit_count, std::vector<uint8_t>& out)
 {
     const size_t row_bytes = bits::bytes_for(bit_count);

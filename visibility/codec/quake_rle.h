@@ -26,6 +26,10 @@ struct QuakeRleResult {
 // stops at the end of `in`. A zero run with no count byte is incomplete.
 QuakeRleResult decode_quake_rle(std::span<const uint8_t> in, size_t bit_count, std::span<uint64_t> out);
 
+// Bit `bit` (< bit_count) of the row decode_quake_rle would give, read without decoding the rest:
+// the walk stops at the byte that holds it (a column of a PVS costs a walk per row, not a row).
+bool quake_rle_test(std::span<const uint8_t> in, size_t bit_count, size_t bit);
+
 // Appends the compressed form of a row of bit_count bits to `out`. Zero runs are split into
 // pieces of at most 255 bytes and never run past the row, exactly as id's and ericw's vis write them.
 void encode_quake_rle(std::span<const uint64_t> row, size_t bit_count, std::vector<uint8_t>& out);
