@@ -79,7 +79,7 @@ void register_inspect_command(CLI::App& app, int& exit_code, std::function<int(c
     CLI::Option* report_fps =
         cmd->add_flag("--report-fps", o->report_fps,
                       "Draw 10 warm-up frames and --frames timed frames without vsync, print the frame times (mean, "
-                      "median, p95, fps) and exit");
+                      "median, p95, fps) and where they go (cull, picture, overlays, panels, GL, swap), and exit");
     cmd->add_option("--cameras", o->cameras,
                     "--report-fps: time one frame from each of N seeded cameras in the zone's open regions (as "
                     "`walk`), instead of --frames from one, and name the slowest")

@@ -52,9 +52,11 @@ void FpsReport::lap(const InspectorState& state, const Phases& phases)
     render_ms_.push_back(state.last_render().draw_ms);
     cull_us_.push_back(state.last_cull().cull_us());
     overlay_ms_.push_back(state.last_overlay_ms());
-    panels_ms_.push_back(
-        std::max(0.0, phases.inspector_ms - cull_ms - state.last_render().draw_ms - state.last_overlay_ms()));
+    const double panels = phases.inspector_ms - phases.inspector_wait_ms - cull_ms - state.last_render().draw_ms -
+                          state.last_overlay_ms();
+    panels_ms_.push_back(std::max(0.0, panels));
     gl_ms_.push_back(phases.gl_ms);
+    wait_ms_.push_back(phases.wait_ms);
     present_ms_.push_back(phases.present_ms);
     faces_.push_back(double(state.last_render().faces_drawn));
 }
@@ -75,13 +77,13 @@ void FpsReport::print(const InspectorState& state) const
                 "  frame  mean %.2f ms (%.1f fps), median %.2f ms (%.1f fps), p95 %.2f ms (%.1f fps)\n"
                 "  render mean %.2f ms, median %.2f ms; cull mean %.1f us; %u of %u regions drawn (last frame)\n"
                 "  where it goes (medians): cull %.3f ms, picture %.2f ms, overlays %.2f ms, panels %.2f ms, "
-                "GL draw %.2f ms, present %.2f ms\n"
+                "GL draw %.2f ms, waiting for the last swap %.2f ms, the swap %.2f ms (overlapped)\n"
                 "  picture: %.0f faces drawn a frame (mean), %.2f us a face\n",
                 frames.size(), std::min(warmup_, frame_ms_.size()), state.image().width, state.image().height,
                 cull_mode_name(state.cull_mode), flying() ? ", one seeded camera a frame" : "", f[0], 1000.0 / f[0],
                 f[1], 1000.0 / f[1], f[2], 1000.0 / f[2], r[0], r[1], c[0], state.last_cull().regions_after_frustum,
                 state.last_cull().regions_total, c[1] / 1000.0, r[1], median(overlay_ms_), median(panels_ms_),
-                median(gl_ms_), median(present_ms_), faces_sum / double(frames.size()),
+                median(gl_ms_), median(wait_ms_), median(present_ms_), faces_sum / double(frames.size()),
                 faces_sum > 0 ? 1000.0 * render_sum / faces_sum : 0.0);
     if (!flying())
         return;

@@ -19,12 +19,15 @@
 #include <array>
 #include <cfloat>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <system_error>
+#include <thread>
 #include <vector>
 
 namespace pvs::gui {
@@ -88,6 +91,91 @@ bool open_platform(Platform& platform, const InspectorOptions& options)
     return platform.gl_backend;
 }
 
+// Presents the window on a thread of its own, so the next frame's cull, picture and overlays
+// (CPU work) run while a software GL driver (Mesa's llvmpipe here) rasterises the panels and
+// swaps. The GL context is current on one thread at a time: present() hands it over, and
+// reclaim() waits for the swap and takes it back before the main thread's next GL call.
+class Presenter {
+public:
+    Presenter(GLFWwindow* window, bool finish) : window_(window), finish_(finish), thread_([this] { run(); }) {}
+    ~Presenter()
+    {
+        reclaim();
+        {
+            std::lock_guard lock(mutex_);
+            quit_ = true;
+        }
+        wake_.notify_all();
+        thread_.join();
+    }
+    Presenter(const Presenter&) = delete;
+    Presenter& operator=(const Presenter&) = delete;
+
+    void present()
+    {
+        glfwMakeContextCurrent(nullptr);
+        {
+            std::lock_guard lock(mutex_);
+            pending_ = true;
+            owned_ = false;
+        }
+        waited_ms_ = 0;
+        wake_.notify_all();
+    }
+    // Waits for the swap in flight, if any, and makes the context current here again.
+    void reclaim()
+    {
+        const auto start = std::chrono::steady_clock::now();
+        std::unique_lock lock(mutex_);
+        if (owned_)
+            return;
+        wake_.wait(lock, [this] { return !pending_; });
+        last_present_ms_ = present_ms_;
+        lock.unlock();
+        glfwMakeContextCurrent(window_);
+        owned_ = true;
+        waited_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    }
+    // The last finished swap's time (with glFinish in timed runs), and how long the main thread
+    // waited for swaps since its last present(), in ms. Main thread only.
+    double last_present_ms() const { return last_present_ms_; }
+    double waited_ms() const { return waited_ms_; }
+
+private:
+    void run()
+    {
+        std::unique_lock lock(mutex_);
+        for (;;) {
+            wake_.wait(lock, [this] { return pending_ || quit_; });
+            if (quit_)
+                return;
+            lock.unlock();
+            const auto start = std::chrono::steady_clock::now();
+            glfwMakeContextCurrent(window_);
+            glfwSwapBuffers(window_);
+            if (finish_)
+                glFinish();
+            glfwMakeContextCurrent(nullptr);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            lock.lock();
+            present_ms_ = ms;
+            pending_ = false;
+            wake_.notify_all();
+        }
+    }
+
+    GLFWwindow* window_;
+    bool finish_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool pending_ = false, quit_ = false; // guarded by mutex_
+    double present_ms_ = 0;               // guarded by mutex_
+    bool owned_ = true;                   // the main thread holds the context (set by it alone)
+    double last_present_ms_ = 0, waited_ms_ = 0;
+    std::thread thread_;
+};
+
 // The viewport's texture: one GL texture, re-specified when the picture's size changes.
 struct ViewportTexture {
     GLuint id = 0;
@@ -142,8 +230,12 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
 {
     FpsReport fps(kWarmupFrames);
     ViewportTexture texture;
+    Presenter presenter(platform.window, options.report_fps);
     InspectorPanels panels;
-    panels.viewport.upload = [&texture](const ui::Image& image) { return texture.upload(image); };
+    panels.viewport.upload = [&](const ui::Image& image) {
+        presenter.reclaim();
+        return texture.upload(image);
+    };
     panels.zone.open_path = options.zone_path;
     if (options.bake)
         panels.bake.request = *options.bake;
@@ -197,7 +289,9 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         draw_inspector(state, panels, scripted ? 1.0f / 30.0f : ImGui::GetIO().DeltaTime);
         ImGui::Render();
         phases.inspector_ms = ms_since(phase_start);
+        phases.inspector_wait_ms = presenter.waited_ms();
 
+        presenter.reclaim();
         phase_start = Clock::now();
         int width = 0, height = 0;
         glfwGetFramebufferSize(platform.window, &width, &height);
@@ -210,21 +304,23 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
         const bool working = state.bake_job().status() == JobStatus::Running ||
                              state.compare_job().status() == JobStatus::Running || state.explanation_running();
         if (scripted && working && frames == 0) {
-            glfwSwapBuffers(platform.window);
+            presenter.present();
             continue; // a scripted bake: the timed or screenshot frames start once it is done
         }
         if (options.pick_centre && frames == 1)
             state.pick(state.image().width / 2, state.image().height / 2);
         if (options.report_fps) {
-            phase_start = Clock::now();
-            glfwSwapBuffers(platform.window);
-            glFinish();
-            phases.present_ms = ms_since(phase_start);
+            // The frame ends when its picture is handed over; the swap overlaps the next frame, and
+            // the next frame's time holds any wait for it.
+            if (size_t(frames + 1) >= fps.frames_needed(size_t(options.frames)) && !options.screenshot.empty() &&
+                !save_window_png(platform.window, options.screenshot))
+                return 1;
+            phases.present_ms = presenter.last_present_ms();
+            phases.wait_ms = presenter.waited_ms();
+            presenter.present();
             fps.lap(state, phases);
             if (size_t(++frames) >= fps.frames_needed(size_t(options.frames))) {
                 fps.print(state);
-                if (!options.screenshot.empty() && !save_window_png(platform.window, options.screenshot))
-                    return 1;
                 return 0;
             }
             continue;
@@ -237,7 +333,7 @@ int run_loop(Platform& platform, InspectorState& state, const InspectorOptions& 
             std::printf("pvscope: wrote %s (%d frames)\n", options.screenshot.c_str(), frames);
             return 0;
         }
-        glfwSwapBuffers(platform.window);
+        presenter.present();
     }
     return 0;
 }
