@@ -17,6 +17,21 @@ void put_varint(uint64_t value, std::vector<uint8_t>& out)
     out.push_back(uint8_t(value));
 }
 
+// Reads the varint at in[i], advancing i. False when `in` ends inside it or it is longer than
+// 64 bits can hold.
+bool get_varint(std::span<const uint8_t> in, size_t& i, uint64_t& value)
+{
+    value = 0;
+    for (unsigned shift = 0;; shift += 7) {
+        if (i >= in.size() || shift > 63)
+            return false;
+        const uint8_t byte = in[i++];
+        value |= uint64_t(byte & 0x7f) << shift;
+        if (!(byte & 0x80))
+            return true;
+    }
+}
+
 // Sets bits [begin, end) of `out`.
 void set_range(std::span<uint64_t> out, size_t begin, size_t end)
 {
@@ -70,14 +85,8 @@ bool decode_bit_runs(std::span<const uint8_t> in, size_t bit_count, std::span<ui
     bool value = false;
     while (at < bit_count) {
         uint64_t run = 0;
-        for (unsigned shift = 0;; shift += 7) {
-            if (i >= in.size() || shift > 63)
-                return false;
-            const uint8_t byte = in[i++];
-            run |= uint64_t(byte & 0x7f) << shift;
-            if (!(byte & 0x80))
-                break;
-        }
+        if (!get_varint(in, i, run))
+            return false;
         if (run > bit_count - at) {
             if (value)
                 set_range(out, at, bit_count);
@@ -99,14 +108,8 @@ bool bit_runs_test(std::span<const uint8_t> in, size_t bit_count, size_t bit)
     bool value = false;
     while (at < bit_count) {
         uint64_t run = 0;
-        for (unsigned shift = 0;; shift += 7) {
-            if (i >= in.size() || shift > 63)
-                return false; // decode_bit_runs leaves the rest clear
-            const uint8_t byte = in[i++];
-            run |= uint64_t(byte & 0x7f) << shift;
-            if (!(byte & 0x80))
-                break;
-        }
+        if (!get_varint(in, i, run))
+            return false; // decode_bit_runs leaves the rest clear
         if (run > bit_count - at)
             return value; // decode_bit_runs sets the rest when the last run overruns set
         if (bit < at + run)
