@@ -238,7 +238,10 @@ TEST(PvsRows, RowColumnAndDiffMatchPairByPairLookups)
                     column.push_back(t);
             }
             EXPECT_EQ(gui::pvs_row_regions(pvs, r), row);
-            EXPECT_EQ(gui::pvs_column_regions(pvs, r), column);
+            gui::PvsColumnScan whole; // every row in one call
+            whole.restart(r);
+            EXPECT_TRUE(whole.step(pvs, pvs.row_count()));
+            EXPECT_EQ(whole.regions, column);
             // Read a few rows a frame, as the region panel does: the same column.
             gui::PvsColumnScan scan;
             scan.restart(r);
@@ -250,6 +253,10 @@ TEST(PvsRows, RowColumnAndDiffMatchPairByPairLookups)
         }
     }
     const Pvs pvs = Pvs::build(n, source);
+    gui::PvsColumnScan past; // a region past the last: no column
+    past.restart(n);
+    EXPECT_TRUE(past.step(pvs, n));
+    EXPECT_TRUE(past.regions.empty());
     EXPECT_EQ(gui::pvs_row_regions(pvs, 5).size(), n);
     EXPECT_TRUE(gui::pvs_row_regions(pvs, n).empty());
 

@@ -2,10 +2,9 @@
 // the frame as mean, median and p95, and where it goes (the median of each phase: cull, the
 // picture, the overlays, the panels, ImGui's GL draw, the wait for the last swap, and the swap
 // itself, which runs on a thread of its own while the next frame is drawn), with the picture's
-// cost per drawn face. With
-// a flight (`--cameras N`) each timed frame is drawn from the next of N seeded cameras
-// (random_cameras_in_regions) after the warm-up frames, and the summary names the slowest camera,
-// so a slow view can be opened again with --camera.
+// cost per drawn face. With a flight (`--cameras N`) each timed frame is drawn from the next of
+// N seeded cameras (random_cameras_in_regions) after the warm-up frames, and the summary names
+// the slowest camera, so a slow view can be opened again with --camera.
 #pragma once
 
 #include "visibility/camera.h"

@@ -31,8 +31,8 @@ struct InspectorOptions {
     // to this PNG and return, without waiting for the user. For tests and the README.
     std::string screenshot;
     int frames = 5;
-    // When set: draw 10 warm-up frames and `frames` timed ones as fast as they go (no vsync), print the frame times
-    // (whole frames: cull, render, upload, ImGui, swap) and return. For docs/performance.md.
+    // When set: draw 10 warm-up frames and `frames` timed ones as fast as they go (no vsync),
+    // print the frame times and where they go (fps_report.h) and return. For docs/performance.md.
     bool report_fps = false;
     // report_fps: draw each timed frame from the next of `cameras` seeded cameras
     // (random_cameras_in_regions with camera_seed) instead of `frames` frames from one, and name

@@ -24,16 +24,6 @@ std::vector<uint32_t> pvs_row_regions(const Pvs& pvs, uint32_t region)
     return regions;
 }
 
-std::vector<uint32_t> pvs_column_regions(const Pvs& pvs, uint32_t region)
-{
-    if (region >= pvs.region_count())
-        return {};
-    PvsColumnScan scan;
-    scan.restart(region);
-    scan.step(pvs, pvs.row_count());
-    return std::move(scan.regions);
-}
-
 void PvsColumnScan::restart(uint32_t column)
 {
     region = column;

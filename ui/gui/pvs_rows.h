@@ -14,12 +14,10 @@ namespace pvs::gui {
 // region out of range.
 std::vector<uint32_t> pvs_row_regions(const Pvs& pvs, uint32_t region);
 
-// Regions that see `region` (its column: every r whose row has it), ascending.
-std::vector<uint32_t> pvs_column_regions(const Pvs& pvs, uint32_t region);
-
-// The same column read a slice of rows at a time, so a panel can spread it over frames: on an
-// open zone it walks 33 k compressed rows (tens of ms), and the region a panel follows changes
-// whenever the camera enters another.
+// Regions that see `region` (its column: every r whose row has it), ascending, read a slice of
+// rows at a time so a panel can spread it over frames: on an open zone it walks 33 k compressed
+// rows (tens of ms), and the region a panel follows changes whenever the camera enters another.
+// A region past the last lists nothing.
 struct PvsColumnScan {
     uint32_t region = 0;
     uint32_t next_row = 0;         // rows below it are read
