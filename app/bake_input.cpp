@@ -188,4 +188,26 @@ PortalInput portal_input_from_file(const std::string& prt_path, const BakeInput&
     return portals;
 }
 
+std::string check_output_against_input(const BakeOptions& o, const BakeInput& in)
+{
+    if (in.format == ZoneFormat::ObjHepvs && o.method != "raster" && o.method != "reference")
+        return "'" + o.input + "' is an OBJ level: " + o.method +
+               " needs a BSP tree, which it has not; bake it with --method raster (or reference: sight lines "
+               "against the mesh)";
+    if (in.format != ZoneFormat::DoomWad && (o.in_place || o.reject || o.heights || !o.map.empty()))
+        return "--in-place, --reject, --heights and --map are for Doom WADs";
+    if (o.reject && !o.in_place && in.doom_source.gl_path != in.doom_source.wad_path)
+        return "--reject: REJECT lives in " + in.doom_source.wad_path + " but the GL nodes (and -o) are in " +
+               in.doom_source.gl_path + "; use --in-place to write both";
+    if (!o.in_place && o.shard.empty() && lowercase_extension(o.output) != format_extension(in))
+        return "'" + o.input + "' is in the " + format_name(in) +
+               " format and bake writes its PVS in the same format, so the output must end in " + format_extension(in) +
+               ", not '" + o.output +
+               "' (to change the format, run `pvscope convert` on the "
+               "result)";
+    if (in.format == ZoneFormat::DoomWad && (!o.prt_in.empty() || !o.prt_out.empty()))
+        return "--prt / --write-prt: a Doom map's portals are its GL nodes' segs, not a portal file";
+    return {};
+}
+
 } // namespace pvs::app

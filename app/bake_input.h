@@ -40,6 +40,10 @@ std::string format_name(const BakeInput& in);
 std::string format_extension(const BakeInput& in);
 std::string lowercase_extension(const std::string& path);
 
+// The argument errors that need the input's format (the output's extension, options for another
+// format); empty when there are none.
+std::string check_output_against_input(const BakeOptions& options, const BakeInput& in);
+
 // Frees the mesh and textures of a Quake map or an EverQuest zone, for a method that reads
 // neither (VisMethod::reads_drawing); the writer reads what it needs again.
 void drop_drawing(BakeInput& in);

@@ -1,10 +1,34 @@
 #include "app/bake_options.h"
 
 #include "app/argument_parsers.h"
+#include "app/bake_input.h"
+#include "app/bake_shard.h"
 
 #include <filesystem>
 
 namespace pvs::app {
+
+namespace {
+
+std::string check_shard_options(const BakeOptions& o)
+{
+    if (o.shard.empty())
+        return {};
+    if (!parse_shard_spec(o.shard))
+        return "--shard must be K/N with 0 <= K < N (shard 0/4 is the first of four), not '" + o.shard + "'";
+    const VisMethod* m = find_vis_method(o.method);
+    if (m && !m->source_costs)
+        return "--shard: " + o.method + " cannot be split into shards yet: " + std::string(m->shard_refusal) +
+               " (raster can)";
+    if (o.in_place || !o.apply_edits.empty() || !o.prt_out.empty())
+        return "--shard writes a part file only: --in-place, --apply-edits and --write-prt belong to the whole bake "
+               "(give --apply-edits to `pvscope merge`)";
+    if (lowercase_extension(o.output) != ".pvsp")
+        return "--shard: the output is a part file, so -o must end in .pvsp, not '" + o.output + "'";
+    return {};
+}
+
+} // namespace
 
 bool bakes_on_portals(const std::string& method) { return method == "portal-fast" || method == "portal-full"; }
 
@@ -45,6 +69,8 @@ std::string check_bake_options(const BakeOptions& o)
          {std::pair{"-o", &o.output}, {"--report", &o.report}, {"--write-prt", &o.prt_out}})
         if (const std::string folder = missing_folder(*file); !folder.empty())
             return std::string(option) + " " + *file + ": no folder " + folder + " to write it in";
+    if (const std::string problem = check_shard_options(o); !problem.empty())
+        return problem;
     std::error_code ec;
     if (!o.apply_edits.empty() && !std::filesystem::is_regular_file(o.apply_edits, ec))
         return "--apply-edits " + o.apply_edits + ": no such file";

@@ -55,6 +55,9 @@ struct BakeOptions {
     // A PVS edit list (wld/pvs_edit_list.h) applied to the bake before it is written: hand fixes
     // that survive a re-vis.
     std::string apply_edits;
+    // "K/N": bake only shard K of N (bake_shard.h) and write its rows as a part file (.pvsp) for
+    // `pvscope merge`; empty: the whole bake.
+    std::string shard;
 };
 
 // The argument errors, each a sentence; empty when the options are usable. Output folders are

@@ -2,6 +2,7 @@
 
 #include "app/bake_input.h"
 #include "app/bake_output.h"
+#include "app/bake_shard.h"
 #include "app/error_path.h"
 #include "app/output_files.h"
 #include "app/process_memory.h"
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 
@@ -24,29 +26,6 @@ namespace {
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The argument errors that need the input's format; empty when there are none.
-std::string check_against_input(const BakeOptions& o, const BakeInput& in)
-{
-    if (in.format == ZoneFormat::ObjHepvs && o.method != "raster" && o.method != "reference")
-        return "'" + o.input + "' is an OBJ level: " + o.method +
-               " needs a BSP tree, which it has not; bake it with --method raster (or reference: sight lines "
-               "against the mesh)";
-    if (in.format != ZoneFormat::DoomWad && (o.in_place || o.reject || o.heights || !o.map.empty()))
-        return "--in-place, --reject, --heights and --map are for Doom WADs";
-    if (o.reject && !o.in_place && in.doom_source.gl_path != in.doom_source.wad_path)
-        return "--reject: REJECT lives in " + in.doom_source.wad_path + " but the GL nodes (and -o) are in " +
-               in.doom_source.gl_path + "; use --in-place to write both";
-    if (!o.in_place && lowercase_extension(o.output) != format_extension(in))
-        return "'" + o.input + "' is in the " + format_name(in) +
-               " format and bake writes its PVS in the same format, so the output must end in " + format_extension(in) +
-               ", not '" + o.output +
-               "' (to change the format, run `pvscope convert` on the "
-               "result)";
-    if (in.format == ZoneFormat::DoomWad && (!o.prt_in.empty() || !o.prt_out.empty()))
-        return "--prt / --write-prt: a Doom map's portals are its GL nodes' segs, not a portal file";
-    return {};
 }
 
 // The portals the bake is handed: a portal file's, or with --write-prt the tree's built here (so
@@ -97,12 +76,48 @@ report::BakeReportHeader report_header(const BakeOptions& o, const BakeInput& in
     return h;
 }
 
+// --shard K/N: the shard's sources baked and written as a part file (bake_shard.h).
+int run_shard(const BakeOptions& o, const BakeInput& in, const VisMethod& method, MethodSettings settings,
+              std::FILE* err, const std::atomic<bool>* cancel)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const ShardSpec shard = *parse_shard_spec(o.shard);
+    const std::vector<double> costs = method.source_costs(in.zone, settings);
+    const std::vector<uint32_t> sources = shard_sources(costs, shard);
+    const uint32_t rows = in.zone.view_grid ? uint32_t(in.zone.view_grid->cell_count()) : uint32_t(in.zone.region_count());
+    std::optional<Pvs> pvs;
+    if (sources.empty()) { // more shards than rows: an empty part, and nothing baked (empty sources = every row)
+        pvs = Pvs::build_rows(rows, uint32_t(in.zone.region_count()), [](uint32_t, std::span<uint64_t>) { return true; });
+    } else {
+        settings.sources = sources;
+        MethodRun run = run_method(method, in.zone, settings, err, cancel);
+        if (run.cancelled) {
+            std::fprintf(err, "pvscope: bake cancelled: nothing was written\n");
+            return kExitCancelled;
+        }
+        pvs = std::move(run.pvs);
+    }
+    const PvsPart part = make_pvs_part(*pvs, sources, shard, bake_zone_hash(o, in), bake_settings_text(o));
+    replace_atomically(o.output, encode_pvs_part(part));
+    double cost = 0;
+    for (uint32_t s : sources)
+        cost += costs[s];
+    std::fprintf(err, "wrote %s: shard %u of %u, %zu of %u rows (cost %.0f of %.0f)\n", o.output.c_str(), shard.index,
+                 shard.count, sources.size(), rows, cost, std::accumulate(costs.begin(), costs.end(), 0.0));
+    if (!o.report.empty())
+        write_report(o.report, {{"shard", shard.index}, {"shards", shard.count}, {"method", o.method},
+                                {"rows", sources.size()}, {"rows_total", rows}, {"cost", cost},
+                                {"seconds", seconds_since(start)}, {"cpu_seconds", process_cpu_seconds()},
+                                {"peak_rss_bytes", peak_rss_bytes()}});
+    return 0;
+}
+
 int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* cancel)
 {
     const auto load_start = std::chrono::steady_clock::now();
     BakeInput in = load_bake_input(o, err);
     const double load_seconds = seconds_since(load_start);
-    if (const std::string problem = check_against_input(o, in); !problem.empty())
+    if (const std::string problem = check_output_against_input(o, in); !problem.empty())
         return bad_arguments(err, problem);
     const VisMethod& method = *find_vis_method(o.method);
     if (!method.reads_drawing)
@@ -114,6 +129,8 @@ int run_checked(const BakeOptions& o, std::FILE* err, const std::atomic<bool>* c
         std::fprintf(err, "note: --clusters auto: a Quake map is baked per leaf (its PVS is per leaf)\n");
     const std::optional<PortalInput> portals = given_portals(o, in, settings);
     settings.portals = portals ? &*portals : nullptr;
+    if (!o.shard.empty())
+        return run_shard(o, in, method, settings, err, cancel);
     MethodRun run = run_method(method, in.zone, settings, err, cancel);
     for (const std::string& note : run.notes)
         std::fprintf(err, "%s\n", note.c_str());

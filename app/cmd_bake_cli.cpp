@@ -132,6 +132,10 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_option("--report", o->report,
                     "Write a JSON report (times, memory, portals, comparison with the "
                     "file's own PVS) to this file, '-' for stdout");
+    cmd->add_option("--shard", o->shard,
+                    "Bake only shard K of N (K/N, from 0/N) of the rows, for a job array: -o names a part file "
+                    "(.pvsp) that `pvscope merge` joins with the others into the whole bake's file, byte for byte "
+                    "(raster)");
     cmd->callback([o, &exit_code] {
         const SigintScope sigint;
         exit_code = run_bake(*o, stderr, &SigintScope::interrupted());

@@ -3,6 +3,7 @@
 // window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
 #include "app/exit_codes.h"
 #include "app/cmd_bake.h"
+#include "app/cmd_merge.h"
 #include "app/cmd_check.h"
 #include "app/cmd_why.h"
 #include "app/cmd_compare.h"
@@ -36,6 +37,7 @@ int main(int argc, char** argv)
     pvs::app::register_walk_command(app, exit_code);
     pvs::app::register_convert_command(app, exit_code);
     pvs::app::register_bake_command(app, exit_code);
+    pvs::app::register_merge_command(app, exit_code);
     pvs::app::register_compare_command(app, exit_code);
     pvs::app::register_stability_command(app, exit_code);
     pvs::app::register_check_command(app, exit_code);

@@ -266,6 +266,7 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     params.points_per_region = s.raster_points;
     params.seed = s.seed;
     params.threads = s.threads;
+    params.cells = s.sources;
     params.progress = s.progress;
     RasterReport report;
     Pvs pvs = zone.view_grid ? bake_raster_grid(zone, *zone.view_grid, params, &report)
@@ -284,6 +285,18 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
                         "points can see more; denser sampling (--step, --points, --resolution) only adds");
     run.pvs = std::move(pvs);
     return run;
+}
+
+// A cell's cost: the points it renders (a point's six views cost about the same anywhere).
+std::vector<double> raster_source_costs(const Zone& zone, const MethodSettings& s)
+{
+    RasterParams params;
+    params.step = s.raster_step;
+    params.lattice = s.raster_lattice;
+    params.points_per_region = s.raster_points;
+    params.seed = s.seed;
+    const std::vector<uint32_t> points = raster_cell_point_counts(zone, params);
+    return std::vector<double>(points.begin(), points.end());
 }
 
 MethodRun run_terrain(const Zone& zone, const MethodSettings& s)
@@ -309,17 +322,22 @@ MethodRun run_terrain(const Zone& zone, const MethodSettings& s)
 constexpr VisMethod kMethods[] = {
     {"file", "the PVS stored in the zone file", Bound::Unknown, false, false, run_file, no_label},
     {"none", "no PVS: the frustum only", Bound::Everything, false, false, run_none, no_label},
-    {"portal-fast", "base portal vis: loose, conservative", Bound::Upper, true, false, run_portal_fast, no_label},
+    {"portal-fast", "base portal vis: loose, conservative", Bound::Upper, true, false, run_portal_fast, no_label,
+     nullptr, "its rows are unions of the directed portals' base vis, computed in batches over every portal"},
     {"portal-full", "clipped portal flow (as Quake's vis): conservative", Bound::Upper, true, false, run_portal_full,
-     full_label},
+     full_label,
+     nullptr, "its flow prunes each portal's walk with the finished rows of the portals ranked before it, so a shard on its own would bake other rows"},
     {"clustered", "portal-full over clusters of regions: faster on big zones, looser", Bound::Upper, true, true,
-     run_clustered, full_label},
+     run_clustered, full_label,
+     nullptr, "its flow prunes each portal's walk with the finished rows of the portals ranked before it, so a shard on its own would bake other rows"},
     {"terrain", "horizon over the zone's heightfield (open ground): conservative, hides only what hills hide",
-     Bound::Upper, true, true, run_terrain, no_label},
+     Bound::Upper, true, true, run_terrain, no_label,
+     nullptr, "each row is a source's horizon intersected with the transposed rows, which need every source"},
     {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true, true,
-     run_reference, reference_label},
+     run_reference, reference_label,
+     nullptr, "a sight line sets the pairs of every region it crosses, and each round's walks aim by the rows every region found in the rounds before"},
     {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop",
-     Bound::Lower, true, true, run_raster, raster_label},
+     Bound::Lower, true, true, run_raster, raster_label, raster_source_costs},
 };
 
 } // namespace

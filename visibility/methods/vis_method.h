@@ -81,6 +81,9 @@ struct MethodSettings {
     Lattice raster_lattice = Lattice::OpenRandom; // grid cells (raster_vis.h)
     bool cull_back_faces = true;
     RasterEngine raster_engine = RasterEngine::Rays; // pixel rays (Embree packets) or the rasteriser
+    // A shard's sources (source_shards.h): compute only these rows, the others stay empty. Only
+    // for methods with source_costs; empty: every row. Must outlive the run.
+    std::span<const uint32_t> sources;
     std::function<bool(double fraction)> progress;
     std::function<void(const ReferenceRound& round, const Pvs& rows)> on_reference_round;
 };
@@ -108,6 +111,13 @@ struct VisMethod {
     MethodRun (*run)(const Zone& zone, const MethodSettings& settings);
     // The settings this method reads, for a label such as "level=2 passages=off" (compare, chart).
     std::string (*label)(const MethodSettings& settings);
+    // Methods whose rows are computed source by source, each row independent of the others: the
+    // cost of each source's row, for splitting the bake into shards (source_shards.h; the method
+    // then reads MethodSettings::sources). nullptr: the method cannot be split (shard_refusal
+    // says why).
+    std::vector<double> (*source_costs)(const Zone& zone, const MethodSettings& settings) = nullptr;
+    // Why a method without source_costs cannot be split, for a user's message.
+    std::string_view shard_refusal = {};
 };
 
 std::span<const VisMethod> vis_methods();

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
 
 namespace pvs {
 
@@ -50,8 +51,14 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     std::atomic<uint64_t> done{0}, points{0};
     std::atomic<bool> stop{false};
     const unsigned threads = params.threads;
+    // The cells to bake: params.cells (a shard's), else every cell; the others' rows stay empty.
+    for (uint32_t cell : params.cells)
+        if (cell >= cells)
+            throw std::invalid_argument("raster: cell " + std::to_string(cell) + " of " + std::to_string(cells));
+    const size_t items = params.cells.empty() ? cells : params.cells.size();
+    const auto cell_of = [&](size_t item) { return params.cells.empty() ? uint32_t(item) : params.cells[item]; };
     const bool finished = parallel_items(
-        cells, threads, params.progress, [&] { return cells ? double(done.load()) / cells : 1.0; }, stop,
+        items, threads, params.progress, [&] { return items ? double(done.load()) / double(items) : 1.0; }, stop,
         [&] {
             Worker w;
             if (params.engine == RasterEngine::Rays)
@@ -61,12 +68,13 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
             w.seen.assign(zone.mesh.faces.size(), 0);
             return w;
         },
-        [&](size_t cell, Worker& w) {
+        [&](size_t item, Worker& w) {
+            const uint32_t cell = cell_of(item);
             std::fill(w.seen.begin(), w.seen.end(), 0);
-            const std::vector<glm::vec3> eyes = points_of(uint32_t(cell));
+            const std::vector<glm::vec3> eyes = points_of(cell);
             for (const glm::vec3& eye : eyes)
                 w.render(eye);
-            const std::span<uint64_t> row(rows.data() + cell * words, words);
+            const std::span<uint64_t> row(rows.data() + size_t(cell) * words, words);
             for (uint32_t f = 0; f < w.seen.size(); ++f)
                 if (w.seen[f])
                     for (uint32_t r : faces.of(f))
@@ -83,13 +91,13 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     if (report) {
         report->cells = done.load();
         report->points = points.load();
-        report->threads = thread_count(threads, cells);
+        report->threads = thread_count(threads, items);
         report->cancelled = !finished;
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         uint64_t bits_set = 0;
         for (uint64_t w : rows)
             bits_set += uint64_t(std::popcount(w));
-        report->mean_visible = cells ? double(bits_set) / cells : 0.0;
+        report->mean_visible = items ? double(bits_set) / double(items) : 0.0;
     }
     return pvs;
 }
@@ -139,67 +147,114 @@ std::vector<glm::vec3> grid_cell_points(const ViewGrid& grid, uint32_t cell, flo
     return points;
 }
 
-Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams& params, RasterReport* report)
+namespace {
+
+// Where a grid zone's open space is: the tree where there is one, else the mesh's tracer.
+std::unique_ptr<MeshTracer> grid_tracer(const Zone& zone, const RasterParams& params, bool for_rays)
 {
-    if (grid.cell_count() > 0xffffffffull)
-        throw std::invalid_argument("raster: too many grid cells");
-    // The mesh's tracer, built once: where open space is (a zone without a tree) and the pixel rays.
-    std::unique_ptr<MeshTracer> mesh;
-    if ((params.open_space_only && !zone.tree.exists()) || params.engine == RasterEngine::Rays)
-        mesh = std::make_unique<MeshTracer>(zone);
+    if ((params.open_space_only && !zone.tree.exists()) || for_rays)
+        return std::make_unique<MeshTracer>(zone);
+    return nullptr;
+}
+
+// A grid cell's sample points in zone space (the bake renders these; a shard plan counts them).
+std::vector<glm::vec3> grid_points(const Zone& zone, const ViewGrid& grid, const RasterParams& params,
+                                   const MeshTracer* mesh, uint32_t cell)
+{
     const auto open = [&](const glm::vec3& p) {
         if (!params.open_space_only)
             return true;
         return zone.tree.exists() ? locate_point(zone.tree, p).in_region()
                                   : mesh->in_open_space(p, 2.0f * params.raster.near_distance);
     };
+    std::vector<glm::vec3> points;
+    if (params.lattice == Lattice::OpenRandom) {
+        const Aabb box = grid.cell_bounds(cell);
+        for (uint32_t i = 0; i < 32 * params.points_per_region && points.size() < params.points_per_region; ++i) {
+            const uint64_t key = sampling::sample_key(params.seed, 0x7a58, cell, i);
+            const glm::vec3 u(float(sampling::hash_unit(key, 0)), float(sampling::hash_unit(key, 1)),
+                              float(sampling::hash_unit(key, 2)));
+            if (const glm::vec3 p = box.min + u * (box.max - box.min); open(p))
+                points.push_back(p);
+        }
+        return points;
+    }
+    for (const glm::vec3& g : grid_cell_points(grid, cell, params.step, params.lattice))
+        if (const glm::vec3 p = grid_to_zone(grid, g); open(p))
+            points.push_back(p);
+    return points;
+}
+
+// A region's sample points: uniform in its volume, clear of its walls.
+std::vector<glm::vec3> region_points(const Zone& zone, const RegionSampler& sampler, const RasterParams& params,
+                                     uint32_t region)
+{
+    std::vector<glm::vec3> points;
+    if (!sampler.has_volume(region))
+        return points;
+    for (uint32_t i = 0; i < params.points_per_region; ++i) {
+        const uint64_t key = sampling::sample_key(params.seed, 0x7a57, region, i);
+        const glm::vec3 p(sampler.point(region, sampling::hash_unit(key, 0), sampling::hash_unit(key, 1),
+                                        sampling::hash_unit(key, 2), sampling::hash_unit(key, 3)));
+        if (clear_of_walls(zone, p, region, 2.0f * params.raster.near_distance))
+            points.push_back(p);
+    }
+    return points;
+}
+
+void check_grid(const ViewGrid& grid)
+{
+    if (grid.cell_count() > 0xffffffffull)
+        throw std::invalid_argument("raster: too many grid cells");
+}
+
+void check_tree(const Zone& zone)
+{
+    if (!zone.tree.exists())
+        throw std::invalid_argument("raster over regions needs a BSP tree to place points in the regions");
+}
+
+} // namespace
+
+Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams& params, RasterReport* report)
+{
+    check_grid(grid);
+    // The mesh's tracer, built once: where open space is (a zone without a tree) and the pixel rays.
+    const std::unique_ptr<MeshTracer> mesh = grid_tracer(zone, params, params.engine == RasterEngine::Rays);
     return bake_cells(
         zone, uint32_t(grid.cell_count()), params, report,
-        [&](uint32_t cell) {
-            std::vector<glm::vec3> points;
-            if (params.lattice == Lattice::OpenRandom) {
-                const Aabb box = grid.cell_bounds(cell);
-                for (uint32_t i = 0; i < 32 * params.points_per_region && points.size() < params.points_per_region; ++i) {
-                    const uint64_t key = sampling::sample_key(params.seed, 0x7a58, cell, i);
-                    const glm::vec3 u(float(sampling::hash_unit(key, 0)), float(sampling::hash_unit(key, 1)),
-                                      float(sampling::hash_unit(key, 2)));
-                    if (const glm::vec3 p = box.min + u * (box.max - box.min); open(p))
-                        points.push_back(p);
-                }
-                return points;
-            }
-            for (const glm::vec3& g : grid_cell_points(grid, cell, params.step, params.lattice))
-                if (const glm::vec3 p = grid_to_zone(grid, g); open(p))
-                    points.push_back(p);
-            return points;
-        },
-        false, mesh.get());
+        [&](uint32_t cell) { return grid_points(zone, grid, params, mesh.get(), cell); }, false, mesh.get());
 }
 
 Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterReport* report)
 {
-    if (!zone.tree.exists())
-        throw std::invalid_argument("raster over regions needs a BSP tree to place points in the regions");
+    check_tree(zone);
     const RegionSampler sampler(zone);
     std::unique_ptr<MeshTracer> mesh; // the pixel rays' tracer, built once for every thread
     if (params.engine == RasterEngine::Rays)
         mesh = std::make_unique<MeshTracer>(zone);
     return bake_cells(
         zone, uint32_t(zone.region_count()), params, report,
-        [&](uint32_t region) {
-            std::vector<glm::vec3> points;
-            if (!sampler.has_volume(region))
-                return points;
-            for (uint32_t i = 0; i < params.points_per_region; ++i) {
-                const uint64_t key = sampling::sample_key(params.seed, 0x7a57, region, i);
-                const glm::vec3 p(sampler.point(region, sampling::hash_unit(key, 0), sampling::hash_unit(key, 1),
-                                                sampling::hash_unit(key, 2), sampling::hash_unit(key, 3)));
-                if (clear_of_walls(zone, p, region, 2.0f * params.raster.near_distance))
-                    points.push_back(p);
-            }
-            return points;
-        },
-        true, mesh.get());
+        [&](uint32_t region) { return region_points(zone, sampler, params, region); }, true, mesh.get());
+}
+
+std::vector<uint32_t> raster_cell_point_counts(const Zone& zone, const RasterParams& params)
+{
+    std::vector<uint32_t> counts;
+    if (zone.view_grid) {
+        check_grid(*zone.view_grid);
+        const std::unique_ptr<MeshTracer> mesh = grid_tracer(zone, params, false);
+        counts.resize(zone.view_grid->cell_count());
+        for (uint32_t cell = 0; cell < counts.size(); ++cell)
+            counts[cell] = uint32_t(grid_points(zone, *zone.view_grid, params, mesh.get(), cell).size());
+        return counts;
+    }
+    check_tree(zone);
+    const RegionSampler sampler(zone);
+    counts.resize(zone.region_count());
+    for (uint32_t region = 0; region < counts.size(); ++region)
+        counts[region] = uint32_t(region_points(zone, sampler, params, region).size());
+    return counts;
 }
 
 } // namespace pvs

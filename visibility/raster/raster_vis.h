@@ -32,6 +32,8 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
+#include <vector>
 
 namespace pvs {
 
@@ -60,6 +62,9 @@ struct RasterParams {
     uint32_t points_per_region = 16; // region cells
     uint64_t seed = 1;
     unsigned threads = 0;            // 0 = all cores
+    // Bake only these cells (a shard's; ascending or not, each once); the other rows stay empty.
+    // Empty: every cell. A cell's row never depends on which other cells are baked.
+    std::span<const uint32_t> cells;
     std::function<bool(double fraction)> progress;
 };
 
@@ -77,5 +82,10 @@ std::vector<glm::vec3> grid_cell_points(const ViewGrid& grid, uint32_t cell, flo
 Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams& params, RasterReport* report = nullptr);
 // Throws std::invalid_argument for a zone without a tree.
 Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterReport* report = nullptr);
+
+// The points each cell would render (the zone's view grid cells, else its regions), a cell's cost
+// for splitting a bake into shards: a point's six views cost about the same anywhere. Throws as
+// the bakes do.
+std::vector<uint32_t> raster_cell_point_counts(const Zone& zone, const RasterParams& params);
 
 } // namespace pvs
