@@ -14,6 +14,8 @@ packages=(
   # The fuzz smoke (tests/fuzz/run-smoke.sh): clang 14 and its compiler-rt, which holds
   # libFuzzer (libclang_rt.fuzzer-x86_64.a) and is only a recommendation of clang-14.
   clang libclang-rt-14-dev
+  # The sharded bake's test on a one-node Slurm (tests/cluster/slurm_array_test.sh).
+  slurmctld slurmd slurm-client munge
   # The format check of changed lines (tests/tools/check_format.sh, .clang-format).
   clang-format
 )

@@ -147,6 +147,16 @@ TEST_F(ShardMerge, PartsThatDoNotBelongAreRefusedByName)
     EXPECT_NE(err_.find("not the zone the parts were baked from"), std::string::npos) << err_;
     EXPECT_FALSE(std::filesystem::exists(out)) << "a refused merge writes nothing";
 
+    // A part cut short (a copy that stopped): the file and the offset, nothing written.
+    std::vector<uint8_t> cut = read_whole_file(p1);
+    cut.resize(cut.size() - 5);
+    const std::string p1_cut = path("p1-cut.pvsp");
+    write_whole_file(p1_cut, cut);
+    EXPECT_EQ(merge({p0, p1_cut}, o.input, out), 1);
+    EXPECT_NE(err_.find("p1-cut.pvsp"), std::string::npos) << err_;
+    EXPECT_NE(err_.find("offset"), std::string::npos) << err_;
+    EXPECT_FALSE(std::filesystem::exists(out));
+
     EXPECT_EQ(merge({p0, p1}, o.input, path("out.bsp")), 2) << "the zone's format decides the output";
     EXPECT_EQ(merge({p0, p1}, o.input, out), 0) << err_;
 }
