@@ -5,11 +5,13 @@
 #include "wld/common/quote.h"
 #include "wld/common/read_file.h"
 #include "wld/eq/pfs_crc.h"
+#include "visibility/worker_pool.h"
 
 #define ZLIB_CONST // next_in is a pointer to const, so the archive's bytes need no cast
 #include <zlib.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstring>
 #include <limits>
@@ -425,22 +427,36 @@ void check_size(const std::vector<uint8_t>& out)
         throw std::invalid_argument("write_pfs: the archive would exceed 4 GiB, beyond PFS's 32-bit offsets");
 }
 
-// Appends `data` as blocks of 8192 bytes (the last one shorter), each its own zlib stream.
+// Appends `data` as blocks of 8192 bytes (the last one shorter), each its own zlib stream. The
+// streams are independent, so a long run is compressed on every core and appended in order: the
+// same bytes as one thread writes (a 33 000-region zone's 12 MB: about half the write's time).
 void write_run(std::vector<uint8_t>& out, std::span<const uint8_t> data, int level)
 {
-    std::vector<uint8_t> compressed(compressBound(kPfsMaxBlockSize));
-    for (size_t at = 0; at < data.size(); at += kPfsMaxBlockSize) {
-        const size_t length = std::min<size_t>(kPfsMaxBlockSize, data.size() - at);
-        uLongf compressed_length = static_cast<uLongf>(compressed.size());
-        const int result = compress2(compressed.data(), &compressed_length, data.data() + at,
-                                     static_cast<uLong>(length), level);
-        if (result == Z_MEM_ERROR)
-            throw std::bad_alloc();
-        if (result != Z_OK)
-            throw std::logic_error("write_pfs: compress2 failed with " + std::to_string(result));
-        put32(out, static_cast<uint32_t>(compressed_length));
+    const size_t blocks = (data.size() + kPfsMaxBlockSize - 1) / kPfsMaxBlockSize;
+    std::vector<std::vector<uint8_t>> packed(blocks);
+    std::atomic<bool> stop{false};
+    constexpr size_t kBlocksPerThread = 64; // below this a thread costs more than it saves
+    parallel_items(
+        blocks, blocks >= 2 * kBlocksPerThread ? 0u : 1u, {}, [] { return 0.0; }, stop,
+        [] { return std::vector<uint8_t>(compressBound(kPfsMaxBlockSize)); },
+        [&](size_t block, std::vector<uint8_t>& compressed) {
+            const size_t at = block * kPfsMaxBlockSize;
+            const size_t length = std::min<size_t>(kPfsMaxBlockSize, data.size() - at);
+            uLongf compressed_length = static_cast<uLongf>(compressed.size());
+            const int result = compress2(compressed.data(), &compressed_length, data.data() + at,
+                                         static_cast<uLong>(length), level);
+            if (result == Z_MEM_ERROR)
+                throw std::bad_alloc();
+            if (result != Z_OK)
+                throw std::logic_error("write_pfs: compress2 failed with " + std::to_string(result));
+            packed[block].assign(compressed.begin(), compressed.begin() + static_cast<std::ptrdiff_t>(compressed_length));
+        });
+    for (size_t block = 0; block < blocks; ++block) {
+        const size_t length = std::min<size_t>(kPfsMaxBlockSize, data.size() - block * kPfsMaxBlockSize);
+        put32(out, static_cast<uint32_t>(packed[block].size()));
         put32(out, static_cast<uint32_t>(length));
-        out.insert(out.end(), compressed.begin(), compressed.begin() + static_cast<std::ptrdiff_t>(compressed_length));
+        out.insert(out.end(), packed[block].begin(), packed[block].end());
+        std::vector<uint8_t>().swap(packed[block]);
         check_size(out);
     }
 }
