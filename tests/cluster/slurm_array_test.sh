@@ -1,6 +1,7 @@
 #!/bin/bash
 # A sharded bake on a real Slurm: starts a one-node cluster on localhost in a temporary folder
-# (Debian's munged, slurmctld and slurmd: a 2-CPU node, no cgroups, no accounting), submits
+# (scripts/slurm/local-cluster.sh: Debian's munged, slurmctld and slurmd, no cgroups, no
+# accounting), submits
 # scripts/slurm/submit-bake.sh's job array and merge for a generated zone and, when the shared data
 # is there, for e1m1, waits for them, and checks each merged file against the one-machine bake,
 # byte for byte. Every daemon it started is stopped by pid on the way out, whatever happened.
@@ -32,15 +33,8 @@ export PATH="$PATH:/usr/sbin"
 
 # Slurm keeps socket and state paths short (at most about 64 characters): a folder under /tmp.
 tmp=$(mktemp -d /tmp/pvsl.XXXXXX)
-pids=()
 stop_all() {
-  for pid in "${pids[@]}"; do
-    kill "$pid" 2>/dev/null || true
-  done
-  for pid in "${pids[@]}"; do
-    for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
-    kill -9 "$pid" 2>/dev/null || true
-  done
+  "$repo/scripts/slurm/local-cluster.sh" stop "$tmp" || true
   rm -rf "$tmp"
 }
 trap stop_all EXIT
@@ -49,59 +43,9 @@ fail() {
   for log in "$tmp"/*.log "$tmp"/*/*.log; do [ -f "$log" ] && { echo "--- $log"; tail -20 "$log"; }; done
   exit 1
 }
-
-# munge: a key and a socket of its own, so no system service is touched.
-mkdir -p "$tmp/munge" && chmod 700 "$tmp/munge"
-dd if=/dev/urandom of="$tmp/munge/key" bs=1024 count=1 status=none && chmod 400 "$tmp/munge/key"
-munged --force --key-file="$tmp/munge/key" --socket="$tmp/munge/sock" --pid-file="$tmp/munge/pid" \
-  --log-file="$tmp/munge.log" --seed-file="$tmp/munge/seed"
-for _ in $(seq 50); do [ -s "$tmp/munge/pid" ] && break; sleep 0.1; done
-[ -s "$tmp/munge/pid" ] || fail "munged did not start"
-pids+=("$(cat "$tmp/munge/pid")")
-
-# Ports of our own, away from a system Slurm's 6817/6818.
-port=$((20000 + RANDOM % 20000))
-host=$(hostname -s)
-mkdir -p "$tmp/state" "$tmp/spool"
-cat > "$tmp/slurm.conf" <<CONF
-ClusterName=pvscope
-SlurmctldHost=$host
-SlurmctldPort=$port
-SlurmdPort=$((port + 1))
-SlurmUser=root
-AuthType=auth/munge
-AuthInfo=socket=$tmp/munge/sock
-CredType=cred/munge
-StateSaveLocation=$tmp/state
-SlurmdSpoolDir=$tmp/spool
-SlurmctldPidFile=$tmp/slurmctld.pid
-SlurmdPidFile=$tmp/slurmd.pid
-SlurmctldLogFile=$tmp/slurmctld.log
-SlurmdLogFile=$tmp/slurmd.log
-ProctrackType=proctrack/linuxproc
-TaskPlugin=task/none
-JobAcctGatherType=jobacct_gather/none
-AccountingStorageType=accounting_storage/none
-SelectType=select/cons_tres
-SelectTypeParameters=CR_CPU
-MpiDefault=none
-ReturnToService=2
-SchedulerType=sched/backfill
-NodeName=$host CPUs=2 State=UNKNOWN
-PartitionName=local Nodes=$host Default=YES MaxTime=INFINITE State=UP
-CONF
-export SLURM_CONF="$tmp/slurm.conf"
-slurmctld -D -f "$SLURM_CONF" > "$tmp/slurmctld.out" 2>&1 &
-pids+=($!)
-slurmd -D -f "$SLURM_CONF" > "$tmp/slurmd.out" 2>&1 &
-pids+=($!)
-for _ in $(seq 150); do
-  state=$(sinfo -h -N -o %t 2>/dev/null || true)
-  [ "$state" = idle ] && break
-  sleep 0.2
-done
-[ "$state" = idle ] || fail "the node is '$state', not idle, after 30 s"
-echo "slurm: node $host idle (ports $port, $((port + 1)))"
+"$repo/scripts/slurm/local-cluster.sh" start "$tmp" || fail "the one-node Slurm did not start"
+# shellcheck disable=SC1091
+source "$tmp/env"
 
 # Waits for a job (and, for an array, all its tasks) to leave the queue.
 wait_job() {
