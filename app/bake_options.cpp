@@ -19,7 +19,10 @@ std::string check_shard_options(const BakeOptions& o)
     const VisMethod* m = find_vis_method(o.method);
     if (m && !m->source_costs)
         return "--shard: " + o.method + " cannot be split into shards yet: " + std::string(m->shard_refusal) +
-               " (raster can)";
+               " (raster and reference can)";
+    if (o.method == "reference" && (!o.per_source || o.samples == 0))
+        return "--shard: the reference splits with --per-source and --samples N only: by default " +
+               std::string(m->shard_refusal);
     if (o.in_place || !o.apply_edits.empty() || !o.prt_out.empty())
         return "--shard writes a part file only: --in-place, --apply-edits and --write-prt belong to the whole bake "
                "(give --apply-edits to `pvscope merge`)";
@@ -69,6 +72,8 @@ std::string check_bake_options(const BakeOptions& o)
          {std::pair{"-o", &o.output}, {"--report", &o.report}, {"--write-prt", &o.prt_out}})
         if (const std::string folder = missing_folder(*file); !folder.empty())
             return std::string(option) + " " + *file + ": no folder " + folder + " to write it in";
+    if (o.per_source && (o.method != "reference" || o.samples == 0))
+        return "--per-source is for --method reference with --samples N (a fixed budget of lines per region)";
     if (const std::string problem = check_shard_options(o); !problem.empty())
         return problem;
     std::error_code ec;
@@ -87,6 +92,7 @@ MethodSettings bake_method_settings(const BakeOptions& o)
     settings.target_checks = o.target_checks;
     settings.samples = o.samples;
     settings.seed = o.seed;
+    settings.reference_per_source = o.per_source;
     settings.raster_resolution = o.resolution;
     settings.raster_engine = o.raster_engine == "rasteriser" ? RasterEngine::Rasteriser : RasterEngine::Rays;
     settings.raster_points = o.points;

@@ -26,6 +26,7 @@ struct BakeOptions {
     std::string report;                 // JSON report path, "-" for stdout
     uint64_t samples = 0;               // reference: lines per region at most (0: until converged)
     uint64_t seed = 1;                  // reference and raster: sampling seed
+    bool per_source = false;            // reference with --samples: each region's lines its own (shardable)
     // raster: pixels per cube face side, points per region (region cells), lattice step in grid
     // units (grid cells; 0 = centre only), back faces drawn or not.
     uint32_t resolution = 64;

@@ -56,6 +56,7 @@ std::string bake_settings_text(const BakeOptions& o)
     j["target_checks"] = o.target_checks;
     j["samples"] = o.samples;
     j["seed"] = o.seed;
+    j["per_source"] = o.per_source;
     j["resolution"] = o.resolution;
     j["points"] = o.points;
     j["step"] = o.step;
@@ -90,6 +91,7 @@ BakeOptions options_from_settings(const std::string& text, const std::string& pa
         o.target_checks = j.at("target_checks").get<bool>();
         o.samples = j.at("samples").get<uint64_t>();
         o.seed = j.at("seed").get<uint64_t>();
+        o.per_source = j.at("per_source").get<bool>();
         o.resolution = j.at("resolution").get<uint32_t>();
         o.points = j.at("points").get<uint32_t>();
         o.step = j.at("step").get<float>();
@@ -111,7 +113,7 @@ BakeOptions options_from_settings(const std::string& text, const std::string& pa
         o.phs_rule = j.at("phs_rule").get<std::string>();
         o.prt_in = j.at("prt").get<std::string>();
     } catch (const std::exception& e) {
-        throw FileError(part, 36, std::string("the bake's settings are unreadable: ") + e.what());
+        throw FileError(part, 40, std::string("the bake's settings are unreadable: ") + e.what());
     }
     return o;
 }
@@ -129,9 +131,10 @@ uint64_t bake_zone_hash(const BakeOptions& o, const BakeInput& in)
 }
 
 PvsPart make_pvs_part(const Pvs& pvs, std::span<const uint32_t> sources, ShardSpec shard, uint64_t zone_hash,
-                      std::string settings)
+                      std::string settings, PartRows join)
 {
     PvsPart part;
+    part.join = join;
     part.zone_hash = zone_hash;
     part.shard = shard.index;
     part.shards = shard.count;

@@ -36,9 +36,9 @@ BakeOptions options_from_settings(const std::string& text, const std::string& pa
 // The zone hash (above) of what `options` read into `in`.
 uint64_t bake_zone_hash(const BakeOptions& options, const BakeInput& in);
 
-// The rows of `pvs` listed in `sources`, as a part of shard `shard`.
+// The rows of `pvs` listed in `sources`, as a part of shard `shard` (PartRows::Union: every row).
 PvsPart make_pvs_part(const Pvs& pvs, std::span<const uint32_t> sources, ShardSpec shard, uint64_t zone_hash,
-                      std::string settings);
+                      std::string settings, PartRows join);
 
 // The process's CPU time so far (user and system), for the shards' reports.
 double process_cpu_seconds();

@@ -97,16 +97,23 @@ int run_shard(const BakeOptions& o, const BakeInput& in, const VisMethod& method
         }
         pvs = std::move(run.pvs);
     }
-    const PvsPart part = make_pvs_part(*pvs, sources, shard, bake_zone_hash(o, in), bake_settings_text(o));
+    // A method whose sources set bits in any row (the reference) hands over every row, to be ORed.
+    std::vector<uint32_t> every_row;
+    if (method.shard_rows_union) {
+        every_row.resize(rows);
+        std::iota(every_row.begin(), every_row.end(), 0u);
+    }
+    const PvsPart part = make_pvs_part(*pvs, method.shard_rows_union ? every_row : sources, shard, bake_zone_hash(o, in),
+                                       bake_settings_text(o), method.shard_rows_union ? PartRows::Union : PartRows::Own);
     replace_atomically(o.output, encode_pvs_part(part));
     double cost = 0;
     for (uint32_t s : sources)
         cost += costs[s];
-    std::fprintf(err, "wrote %s: shard %u of %u, %zu of %u rows (cost %.0f of %.0f)\n", o.output.c_str(), shard.index,
+    std::fprintf(err, "wrote %s: shard %u of %u, %zu of %u sources (cost %.0f of %.0f)\n", o.output.c_str(), shard.index,
                  shard.count, sources.size(), rows, cost, std::accumulate(costs.begin(), costs.end(), 0.0));
     if (!o.report.empty())
         write_report(o.report, {{"shard", shard.index}, {"shards", shard.count}, {"method", o.method},
-                                {"rows", sources.size()}, {"rows_total", rows}, {"cost", cost},
+                                {"sources", sources.size()}, {"rows_total", rows}, {"cost", cost},
                                 {"seconds", seconds_since(start)}, {"cpu_seconds", process_cpu_seconds()},
                                 {"peak_rss_bytes", peak_rss_bytes()}});
     return 0;

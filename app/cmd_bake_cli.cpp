@@ -89,6 +89,10 @@ void register_bake_command(CLI::App& app, int& exit_code)
                     "under 0.1% of the bits, up to 8192: e1m1 converges at 2048, about "
                     "20 s with 2 cores)")
         ->capture_default_str();
+    cmd->add_flag("--per-source", o->per_source,
+                  "reference with --samples N: each region's walks aim by what its own lines found (not every "
+                  "region's), so its lines depend on it alone and the bake splits into shards (--shard); a few more "
+                  "lines");
     cmd->add_option("--seed", o->seed, "reference, raster: the sampling seed (the same seed gives the same PVS)")
         ->capture_default_str();
     cmd->add_option("--resolution", o->resolution, "raster: pixels per cube face side")->capture_default_str();
@@ -135,7 +139,7 @@ void register_bake_command(CLI::App& app, int& exit_code)
     cmd->add_option("--shard", o->shard,
                     "Bake only shard K of N (K/N, from 0/N) of the rows, for a job array: -o names a part file "
                     "(.pvsp) that `pvscope merge` joins with the others into the whole bake's file, byte for byte "
-                    "(raster)");
+                    "(raster; reference with --per-source --samples N)");
     cmd->callback([o, &exit_code] {
         const SigintScope sigint;
         exit_code = run_bake(*o, stderr, &SigintScope::interrupted());

@@ -53,6 +53,8 @@ void check_parts_fit(const std::vector<NamedPart>& parts)
             mismatch(36, "baked with other settings: " + p.part.settings + " against " + first.part.settings);
         if (p.part.row_count != first.part.row_count || p.part.region_count != first.part.region_count)
             mismatch(28, "other row or region counts");
+        if (p.part.join != first.part.join)
+            mismatch(36, "its rows join by another rule");
         if (const NamedPart* other = by_shard[p.part.shard])
             throw FileError(p.file, 20, "shard " + std::to_string(p.part.shard) + " twice: it is also " + other->file);
         by_shard[p.part.shard] = &p;
@@ -66,10 +68,30 @@ void check_parts_fit(const std::vector<NamedPart>& parts)
                         "the merge needs all " + std::to_string(first.part.shards) + " shards; missing: " + missing);
 }
 
+// The whole PVS from parts whose rows are ORed (PartRows::Union): every part holds every row.
+Pvs union_rows(const std::vector<NamedPart>& parts)
+{
+    const PvsPart& first = parts.front().part;
+    for (const NamedPart& p : parts)
+        if (p.part.sources.size() != first.row_count)
+            throw FileError(p.file, 0,
+                            "holds " + std::to_string(p.part.sources.size()) + " of " + std::to_string(first.row_count) +
+                                " rows, but its rows are to be ORed with the other parts' (it must hold every row)");
+    const size_t words = first.words_per_row();
+    return Pvs::build_rows(first.row_count, first.region_count, [&](uint32_t r, std::span<uint64_t> out) {
+        for (const NamedPart& p : parts)
+            for (size_t w = 0; w < words; ++w)
+                out[w] |= p.part.rows[size_t(r) * words + w];
+        return true;
+    });
+}
+
 // The whole PVS from the parts: every row in exactly one part.
 Pvs join_rows(const std::vector<NamedPart>& parts)
 {
     const PvsPart& first = parts.front().part;
+    if (first.join == PartRows::Union)
+        return union_rows(parts);
     struct Where {
         int32_t part = -1;
         uint32_t index = 0;

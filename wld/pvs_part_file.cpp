@@ -82,6 +82,7 @@ std::vector<uint8_t> encode_pvs_part(const PvsPart& part)
     put_u32(out, part.shards);
     put_u32(out, part.row_count);
     put_u32(out, part.region_count);
+    put_u32(out, uint32_t(part.join));
     put_u32(out, uint32_t(part.settings.size()));
     out.insert(out.end(), part.settings.begin(), part.settings.end());
     put_u32(out, uint32_t(part.sources.size()));
@@ -117,6 +118,10 @@ PvsPart decode_pvs_part(std::span<const uint8_t> bytes, const std::string& name)
         throw FileError(name, 20, "shard " + std::to_string(part.shard) + " of " + std::to_string(part.shards));
     part.row_count = in.u32("the row count");
     part.region_count = in.u32("the region count");
+    const uint32_t join = in.u32("the rows' join");
+    if (join > uint32_t(PartRows::Union))
+        throw FileError(name, 36, "rows joined by rule " + std::to_string(join) + " (0 or 1)");
+    part.join = PartRows(join);
     const uint64_t settings_at = in.offset();
     const uint32_t settings_size = in.u32("the settings' length");
     if (settings_size > kMaxSettings)

@@ -7,7 +7,9 @@
 //   20  u32      shard K, 24 u32 shards N (K < N)
 //   28  u32      rows (the zone's PVS rows: regions, or view cells of a grid zone)
 //   32  u32      regions (bits per row)
-//   36  u32      T, then T bytes: the bake's settings as text (the method and every option that
+//   36  u32      how the parts' rows join: 0, each row is in one part (its source's); 1, every
+//                part holds every row and the merge ORs them (a source's work sets bits anywhere)
+//   40  u32      T, then T bytes: the bake's settings as text (the method and every option that
 //                changes a bit or a written byte; the merge checks that all parts agree)
 //   ..  u32      S, then S u32: the rows this shard computed, ascending, each < rows
 //   ..  u64      L, then L bytes: zlib of the S rows, words_for(regions) u64 each
@@ -23,8 +25,11 @@
 
 namespace pvs {
 
+enum class PartRows : uint32_t { Own = 0, Union = 1 };
+
 struct PvsPart {
     uint64_t zone_hash = 0;
+    PartRows join = PartRows::Own;
     uint32_t shard = 0, shards = 1;
     uint32_t row_count = 0, region_count = 0;
     std::string settings;

@@ -1,6 +1,7 @@
 // `pvscope bake --shard K/N` and `pvscope merge` as a user runs them: the merged file holds exactly
-// the bytes of the one-machine bake (a generated .s3d, the shared e1m1 .bsp with its ambient
-// levels, the HateEngine OBJ grid's .hepvs), at any shard count, more shards than rows included;
+// the bytes of the one-machine bake (raster on a generated .s3d, the shared e1m1 .bsp with its
+// ambient levels and the HateEngine OBJ grid's .hepvs; the per-source reference, whose parts are
+// ORed, on a generated zone and e1m1), at any shard count, more shards than rows included;
 // and every part that does not belong is refused with its name and what is wrong.
 #include "app/cmd_merge.h"
 
@@ -100,6 +101,30 @@ TEST_F(ShardMerge, SharedObjGridToHepvs)
     expect_merge_is_the_whole_bake(o, 2);
 }
 
+TEST_F(ShardMerge, ReferencePerSourceOnAGeneratedZone)
+{
+    app::BakeOptions o = bake_generated({6, 2}, "whole.s3d");
+    o.method = "reference";
+    o.samples = 32;
+    o.per_source = true;
+    o.threads = 2;
+    for (uint32_t shards : {1u, 3u})
+        expect_merge_is_the_whole_bake(o, shards);
+}
+
+TEST_F(ShardMerge, ReferencePerSourceOnTheSharedE1m1)
+{
+    SHARED_DATA_OR_SKIP(map, "quake/e1m1.bsp");
+    app::BakeOptions o;
+    o.input = map;
+    o.output = path("whole.bsp");
+    o.method = "reference";
+    o.samples = 16;
+    o.per_source = true;
+    o.threads = 2;
+    expect_merge_is_the_whole_bake(o, 2);
+}
+
 TEST_F(ShardMerge, ShardsCostAboutTheSame)
 {
     app::BakeOptions o = raster_of_generated("unused.s3d");
@@ -168,6 +193,10 @@ TEST_F(ShardMerge, BakeRefusesWhatCannotBeSplit)
     o.shard = "0/2";
     EXPECT_EQ(run(o), 2);
     EXPECT_NE(err_.find("cannot be split into shards"), std::string::npos) << err_;
+    o.method = "reference"; // by default its walks aim by every region's rows
+    o.samples = 32;
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("--per-source and --samples"), std::string::npos) << err_;
     o.method = "raster";
     for (const char* bad : {"2/2", "1", "a/2", "0/0", "-1/2"}) {
         o.shard = bad;

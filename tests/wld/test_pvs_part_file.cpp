@@ -17,6 +17,7 @@ PvsPart sample_part()
     part.zone_hash = 0x0123456789abcdefull;
     part.shard = 1;
     part.shards = 3;
+    part.join = PartRows::Union;
     part.row_count = 130;
     part.region_count = 130; // three words a row, the last one partial
     part.settings = R"({"method":"raster"})";
@@ -40,6 +41,7 @@ TEST(PvsPartFile, RoundTrip)
     const PvsPart part = sample_part();
     const PvsPart back = decode_pvs_part(encode_pvs_part(part), "p.pvsp");
     EXPECT_EQ(back.zone_hash, part.zone_hash);
+    EXPECT_EQ(back.join, part.join);
     EXPECT_EQ(back.shard, part.shard);
     EXPECT_EQ(back.shards, part.shards);
     EXPECT_EQ(back.row_count, part.row_count);
@@ -70,7 +72,7 @@ TEST(PvsPartFile, HostileHeadersAreRefusedWithTheirOffset)
 {
     const std::vector<uint8_t> good = encode_pvs_part(sample_part());
     const size_t settings_size = sample_part().settings.size();
-    const size_t sources_at = 40 + settings_size + 4;
+    const size_t sources_at = 44 + settings_size + 4;
     struct Case {
         const char* what;
         size_t at;
@@ -80,8 +82,9 @@ TEST(PvsPartFile, HostileHeadersAreRefusedWithTheirOffset)
         {"magic", 0, 0x58585858, 0},
         {"version", 8, 2, 8},
         {"shard past the count", 20, 3, 20},
-        {"settings longer than the file", 36, 0x7fffffff, 36},
-        {"more sources than rows", 40 + settings_size, 131, 40 + settings_size},
+        {"an unknown join rule", 36, 2, 36},
+        {"settings longer than the file", 40, 0x7fffffff, 40},
+        {"more sources than rows", 44 + settings_size, 131, 44 + settings_size},
         {"a source past the last row", sources_at, 130, sources_at},
         {"sources out of order", sources_at + 4, 1, sources_at + 4},
     };

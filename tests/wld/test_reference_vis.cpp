@@ -147,6 +147,43 @@ TEST(ReferenceVis, GeneratedZoneLowerBoundAndDeterministic)
                 static_cast<unsigned long long>(pvs_gap(&other_seed, one).missing_bits));
 }
 
+// Per source, a bake of some regions' lines sets exactly what those lines set in the whole bake:
+// two halves of the regions, ORed, give the whole bake's rows, and it stays a lower bound.
+TEST(ReferenceVis, PerSourceHalvesOrToTheWholeBake)
+{
+    const Zone zone = gen::generate_zone({30, 7});
+    ReferenceParams params;
+    params.max_samples = 128;
+    params.converge_share = 0.0;
+    params.per_source = true;
+    params.threads = 2;
+    const Pvs whole = bake_reference_vis(zone, params);
+    std::vector<uint32_t> halves[2];
+    for (uint32_t r = 0; r < zone.region_count(); ++r)
+        halves[r % 3 == 0].push_back(r); // not an id range
+    std::vector<Pvs> parts;
+    for (const std::vector<uint32_t>& half : halves) {
+        params.sources = half;
+        parts.push_back(bake_reference_vis(zone, params));
+    }
+    for (uint32_t r = 0; r < whole.region_count(); ++r) {
+        std::vector<uint32_t> joined = row_members(parts[0], r);
+        const std::vector<uint32_t> other = row_members(parts[1], r);
+        joined.insert(joined.end(), other.begin(), other.end());
+        std::sort(joined.begin(), joined.end());
+        joined.erase(std::unique(joined.begin(), joined.end()), joined.end());
+        ASSERT_EQ(joined, row_members(whole, r)) << "row " << r;
+    }
+    size_t half_bits = 0, whole_bits = 0;
+    for (uint32_t r = 0; r < whole.region_count(); ++r) {
+        half_bits += row_members(parts[1], r).size(); // the third of the regions
+        whole_bits += row_members(whole, r).size();
+    }
+    EXPECT_LT(half_bits, whole_bits) << "a part alone lacks bits: the sources were split";
+    const Pvs full = portal(zone, VisParams::Method::Full, SkyPortals::SkyToSky);
+    expect_within(whole, &full, "the per-source reference within portal-full");
+}
+
 TEST(ReferenceVis, RoundsDoubleAndReportTheirBits)
 {
     const Zone zone = gen::generate_zone({20, 2});

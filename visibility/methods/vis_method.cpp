@@ -10,6 +10,8 @@
 #include "visibility/portal/region_clusters.h"
 #include "visibility/raster/raster_vis.h"
 #include "visibility/reference/mesh_reference.h"
+#include "visibility/reference/portal_sampler.h"
+#include "visibility/reference/region_sampler.h"
 #include "visibility/terrain/terrain_vis.h"
 
 #include <chrono>
@@ -225,6 +227,8 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
         params.initial_samples = uint32_t(std::min<uint64_t>(params.initial_samples, s.samples));
         params.converge_share = 0.0;
     }
+    params.per_source = s.reference_per_source;
+    params.sources = s.sources;
     ReferenceReport report;
     Pvs pvs = bake_reference_vis(zone, params, &report);
     MethodRun run;
@@ -243,6 +247,27 @@ MethodRun run_reference(const Zone& zone, const MethodSettings& s)
     run.notes.push_back(kReferenceCanPop);
     run.pvs = std::move(pvs);
     return run;
+}
+
+// A region's cost: its volume lines, and its walks at about 300 lines each (the progress bar's
+// weights; reference_vis.cpp), where it has a volume and portals.
+std::vector<double> reference_source_costs(const Zone& zone, const MethodSettings& s)
+{
+    if (!zone.tree.exists()) // an OBJ level's reference traces against the mesh, over its grid's cells
+        throw std::invalid_argument("the reference of a zone without a BSP tree (sight lines against the mesh) "
+                                    "cannot be split into shards yet");
+    const RegionSampler volumes(zone);
+    PortalOptions portal_options;
+    portal_options.sky = s.sky;
+    const PortalSet portal_set = build_zone_portals(zone, portal_options);
+    const PortalSampler portals(portal_set, uint32_t(zone.region_count()));
+    const ReferenceParams defaults;
+    const double samples = double(s.samples ? s.samples : defaults.max_samples);
+    const double walks = double(defaults.initial_walks) * samples / double(defaults.initial_samples);
+    std::vector<double> costs(zone.region_count(), 0.0);
+    for (uint32_t r = 0; r < costs.size(); ++r)
+        costs[r] = (volumes.has_volume(r) ? samples : 0.0) + (portals.links(r).empty() ? 0.0 : 300.0 * walks);
+    return costs;
 }
 
 std::string raster_label(const MethodSettings& s)
@@ -334,8 +359,10 @@ constexpr VisMethod kMethods[] = {
      Bound::Upper, true, true, run_terrain, no_label,
      nullptr, "each row is a source's horizon intersected with the transposed rows, which need every source"},
     {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true, true,
-     run_reference, reference_label,
-     nullptr, "a sight line sets the pairs of every region it crosses, and each round's walks aim by the rows every region found in the rounds before"},
+     run_reference, reference_label, reference_source_costs,
+     "each round's walks aim by the rows every region found in the rounds before (--per-source and --samples N make "
+     "each region's lines its own)",
+     true},
     {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop",
      Bound::Lower, true, true, run_raster, raster_label, raster_source_costs},
 };

@@ -73,6 +73,9 @@ struct MethodSettings {
     // reference: lines per region at most (0: the default, until converged), and the seed.
     uint64_t samples = 0;
     uint64_t seed = 1;
+    // reference: each region's walks aim by its own lines (ReferenceParams::per_source), so with
+    // `samples` set each region's lines depend on it alone and the bake splits into shards.
+    bool reference_per_source = false;
     // raster: pixels per cube face side, sample points per region (region cells), lattice step in
     // grid units (grid cells; 0 = each cell's centre only), and the back-face rule.
     uint32_t raster_resolution = 64;
@@ -116,8 +119,13 @@ struct VisMethod {
     // then reads MethodSettings::sources). nullptr: the method cannot be split (shard_refusal
     // says why).
     std::vector<double> (*source_costs)(const Zone& zone, const MethodSettings& settings) = nullptr;
-    // Why a method without source_costs cannot be split, for a user's message.
+    // Why a method without source_costs cannot be split (or, with them, what it needs to split),
+    // for a user's message.
     std::string_view shard_refusal = {};
+    // How shards' rows join: false, each row is its own source's (a part holds its sources' rows);
+    // true, a source's work sets bits in any row (the reference's lines prove pairs of every
+    // region they cross), so a part holds every row and the merge ORs them.
+    bool shard_rows_union = false;
 };
 
 std::span<const VisMethod> vis_methods();

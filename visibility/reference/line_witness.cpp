@@ -150,3 +150,25 @@ uint64_t witness_pairs(const TreeTracer& tracer, const glm::dvec3& point, const 
 }
 
 } // namespace pvs
+
+namespace pvs {
+
+void witness_source_pairs(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction,
+                          const Stretch& stretch, uint32_t source, WitnessRows& proven, TreeTracer::Scratch& scratch)
+{
+    const std::vector<uint32_t>& regions = stretch.regions;
+    for (size_t i = 0; i < regions.size(); ++i) {
+        if (regions[i] != source)
+            continue;
+        for (size_t j = 0; j < regions.size(); ++j) {
+            const uint32_t other = regions[j];
+            if (other == source || proven.test(source, other))
+                continue;
+            const double t0 = std::min(stretch.t_mid[i], stretch.t_mid[j]), t1 = std::max(stretch.t_mid[i], stretch.t_mid[j]);
+            if (tracer.open_beam(point + t0 * direction, direction, t1 - t0, kBeamMargin, scratch))
+                proven.set(source, other);
+        }
+    }
+}
+
+} // namespace pvs

@@ -84,4 +84,10 @@ bool open_stretch(const TreeTracer& tracer, const glm::dvec3& point, const glm::
 uint64_t witness_pairs(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction,
                        const Stretch& stretch, WitnessRows& rows, TreeTracer::Scratch& scratch);
 
+// The pairs (source, X) of the line's stretch that this line proves (the same beam test), set in
+// `proven`'s row `source` only, whatever other lines found: what one region's own lines prove,
+// which depends on that region's lines alone (reference_vis.h, "Sources").
+void witness_source_pairs(const TreeTracer& tracer, const glm::dvec3& point, const glm::dvec3& direction,
+                          const Stretch& stretch, uint32_t source, WitnessRows& proven, TreeTracer::Scratch& scratch);
+
 } // namespace pvs

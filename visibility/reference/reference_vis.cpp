@@ -17,6 +17,8 @@
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <optional>
+#include <string>
 #include <stdexcept>
 #include <thread>
 
@@ -46,6 +48,9 @@ struct Shared {
     const PortalWalker& walker;
     WitnessRows& rows;
     std::span<const uint64_t> before; // the rows when the round began: what counts as new
+    // Per source: row A holds the regions A's own lines have proved visible from A (what A's
+    // walks skip); nullptr otherwise.
+    WitnessRows* own;
     uint64_t seed;
     Aabb world; // lines end where they leave it (zone_portal_world: where regions are taken)
     std::atomic<uint64_t> lines{0};
@@ -62,12 +67,16 @@ struct Scratch {
     PortalWalker::Scratch walk;
 };
 
-// Sets the pairs of the line's open stretch.
-void prove(Shared& s, const glm::dvec3& point, const glm::dvec3& direction, Scratch& scratch)
+// Sets the pairs of the line's open stretch; per source, also the pairs of `source` it proves in
+// `source`'s own row.
+void prove(Shared& s, uint32_t source, const glm::dvec3& point, const glm::dvec3& direction, Scratch& scratch)
 {
     scratch.stretch.regions.clear();
-    if (open_stretch(s.tracer, point, direction, s.world, scratch.trace, scratch.stretch))
-        witness_pairs(s.tracer, point, direction, scratch.stretch, s.rows, scratch.trace);
+    if (!open_stretch(s.tracer, point, direction, s.world, scratch.trace, scratch.stretch))
+        return;
+    if (s.own)
+        witness_source_pairs(s.tracer, point, direction, scratch.stretch, source, *s.own, scratch.trace);
+    witness_pairs(s.tracer, point, direction, scratch.stretch, s.rows, scratch.trace);
 }
 
 // Lines [first, end) of region r's volume stream: through a uniform point of r's volume, in a
@@ -87,7 +96,7 @@ void sample_volume(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch&
             ++rejected;
             continue;
         }
-        prove(s, point, sampling::stratified_direction(uint32_t(i), shift), scratch);
+        prove(s, r, point, sampling::stratified_direction(uint32_t(i), shift), scratch);
     }
     s.lines.fetch_add(end - first, std::memory_order_relaxed);
     s.rejected.fetch_add(rejected, std::memory_order_relaxed);
@@ -113,13 +122,15 @@ glm::dvec3 walk_eye(const Shared& s, uint32_t r, std::span<const PortalSampler::
 // Walks [first, end) of region r's stream (point_walk.h): from each eye, a line through the
 // window of every region the walk reaches that r did not see when the round began. (The rows as
 // the round began, not as they are: what other threads have found must not change which lines
-// are traced.)
+// are traced.) Per source: every region r's own lines have not proved so far (only r's worker
+// writes that row, in a fixed order).
 void sample_walks(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch& scratch)
 {
     const std::span<const PortalSampler::Link> out_of = s.portals.links(r);
     if (out_of.empty())
         return;
-    const std::span<const uint64_t> seen = s.before.subspan(size_t(r) * s.rows.words_per_row(), s.rows.words_per_row());
+    const std::span<const uint64_t> seen =
+        s.own ? s.own->row(r) : s.before.subspan(size_t(r) * s.rows.words_per_row(), s.rows.words_per_row());
     uint64_t lines = 0, truncated = 0;
     for (uint64_t i = first; i < end; ++i) {
         const glm::dvec3 eye = walk_eye(s, r, out_of, i);
@@ -132,7 +143,7 @@ void sample_walks(Shared& s, uint32_t r, uint64_t first, uint64_t end, Scratch& 
             const double length = glm::length(d);
             if (!(length > 0.0))
                 continue;
-            prove(s, eye + 0.5 * d, d / length, scratch); // from a point surely off the portal
+            prove(s, r, eye + 0.5 * d, d / length, scratch); // from a point surely off the portal
             ++lines;
         }
     }
@@ -183,8 +194,18 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     for (uint32_t r = 0; r < regions; ++r)
         report.regions_without_volume += volumes.has_volume(r) ? 0 : 1;
 
+    std::optional<WitnessRows> own;
+    if (params.per_source)
+        own.emplace(regions);
+    // The regions whose lines are traced: params.sources (a shard's), else every region.
+    for (uint32_t r : params.sources)
+        if (r >= regions)
+            throw std::invalid_argument("reference: source " + std::to_string(r) + " of " + std::to_string(regions));
+    const size_t source_count = params.sources.empty() ? regions : params.sources.size();
+    const auto source = [&](size_t item) { return params.sources.empty() ? uint32_t(item) : params.sources[item]; };
+
     const Aabb world = zone_portal_world(zone);
-    Shared shared{tracer, volumes, portals, walker, rows, {}, params.seed, world};
+    Shared shared{tracer, volumes, portals, walker, rows, {}, own ? &*own : nullptr, params.seed, world};
     // Volume line indices feed a 32-bit (0,2)-sequence: at most 2^32 per region.
     const uint64_t max_samples = std::clamp<uint64_t>(params.max_samples, 1, uint64_t{1} << 32);
     const uint64_t initial = std::min<uint64_t>(std::bit_ceil(std::max<uint32_t>(params.initial_samples, 1)), max_samples);
@@ -192,10 +213,12 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     // as kWalkCost lines (its measured cost on e1m1). The lines aimed by walks are not known in
     // advance; they are few (under a line per walk), so the bar may end a little early.
     constexpr double kWalkCost = 300.0;
-    uint32_t regions_with_portals = 0;
-    for (uint32_t r = 0; r < regions; ++r)
-        regions_with_portals += portals.links(r).empty() ? 0 : 1;
-    const double planned = double(regions - report.regions_without_volume) * double(max_samples) +
+    uint32_t regions_with_portals = 0, sources_with_volume = 0;
+    for (size_t i = 0; i < source_count; ++i) {
+        regions_with_portals += portals.links(source(i)).empty() ? 0 : 1;
+        sources_with_volume += volumes.has_volume(source(i)) ? 1 : 0;
+    }
+    const double planned = double(sources_with_volume) * double(max_samples) +
                            kWalkCost * double(regions_with_portals) * double(params.initial_walks) *
                                double(max_samples / initial);
     auto fraction = [&] {
@@ -206,20 +229,20 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     uint64_t bits_before = rows.count();
     bool cancelled = false;
     for (uint64_t first = 0, end = initial, round = 0; first < end && !cancelled; ++round) {
-        const std::vector<uint64_t> before = rows.snapshot();
+        const std::vector<uint64_t> before = own ? std::vector<uint64_t>{} : rows.snapshot();
         shared.before = before;
         ReferenceRound summary;
         // Volume lines: the next indices of every region's stream, up to `end` in all.
-        cancelled = !parallel_items(shared, regions, report.threads, params.progress, fraction,
-                                    [&](size_t r, Scratch& scratch) {
-                                        sample_volume(shared, uint32_t(r), first, end, scratch);
+        cancelled = !parallel_items(shared, source_count, report.threads, params.progress, fraction,
+                                    [&](size_t i, Scratch& scratch) {
+                                        sample_volume(shared, source(i), first, end, scratch);
                                     });
         // Walks: the next eyes of every region's stream, doubling like the volume lines.
         const uint64_t walks_end = uint64_t(params.initial_walks) << round;
         if (!cancelled && walks_end > 0)
-            cancelled = !parallel_items(shared, regions, report.threads, params.progress, fraction,
-                                        [&](size_t r, Scratch& scratch) {
-                                            sample_walks(shared, uint32_t(r), round == 0 ? 0 : walks_end / 2, walks_end,
+            cancelled = !parallel_items(shared, source_count, report.threads, params.progress, fraction,
+                                        [&](size_t i, Scratch& scratch) {
+                                            sample_walks(shared, source(i), round == 0 ? 0 : walks_end / 2, walks_end,
                                                          scratch);
                                         });
         if (cancelled)
@@ -252,8 +275,8 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     report.truncated_walks = shared.truncated_walks.load();
     report.seconds = seconds_since(start);
     report.mean_visible = regions ? double(rows.count()) / double(regions) : 0.0;
-    report.peak_bytes_estimate =
-        2 * rows.memory_bytes() + volumes.memory_bytes() + portals.memory_bytes() + pvs.memory_bytes();
+    report.peak_bytes_estimate = 2 * rows.memory_bytes() + (own ? own->memory_bytes() : 0) +
+                                 volumes.memory_bytes() + portals.memory_bytes() + pvs.memory_bytes();
     if (report_out)
         *report_out = std::move(report);
     return pvs;

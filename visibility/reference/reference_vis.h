@@ -45,6 +45,19 @@
 // lines a walk aims only on its eye and the rows when the round began, and bits are only ever
 // OR-ed in, so neither the thread count nor timing changes the result.
 //
+// Sources (ReferenceParams::per_source). By default a walk skips the regions that any region's
+// lines had proved visible from its region when the round began, so region A's lines depend on
+// every other region's. Per source, A's walks skip the regions that A's own lines have proved
+// visible from A so far (the same beam test, line_witness.h: witness_source_pairs; its volume
+// lines and the lines its walks aimed, in their fixed order), and nothing else. With a fixed
+// budget (converge_share 0: every round up to max_samples) every line of A is then a function of
+// the seed, A and the budget, and the bits are the OR over regions of what their lines prove: a
+// bake of some regions' lines (ReferenceParams::sources, a shard) sets exactly the bits those
+// lines set in the whole bake, and the OR of the shards is the whole bake. On e1m1 at 2048 lines
+// a region it finds the same mean visible (141.3) with 13 % fewer lines (a walk skips what the
+// region's earlier eyes in the same round found) at about the same time, and keeps a second
+// matrix (each region's own proved row).
+//
 // Threads, progress, cancel: as bake_portal_vis (params.threads workers, 0 = all cores; the
 // calling thread calls progress(fraction) about every 50 ms with the fraction done of the work up
 // to max_samples, walks included, and at 1; false cancels: the rows found so far are returned,
@@ -64,6 +77,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 namespace pvs {
@@ -86,6 +100,12 @@ struct ReferenceParams {
     double converge_share = 0.001;     // stop after a round adding fewer than this share of the bits; 0: never
     SkyPortals sky = SkyPortals::SkyToSky;
     unsigned threads = 0;              // 0 = std::thread::hardware_concurrency()
+    // Per source (see "Sources" above): a region's walks aim by what its own lines proved, so
+    // every line of region A depends on the seed, A and the budget alone.
+    bool per_source = false;
+    // Trace only these regions' lines (a shard's; with per_source and converge_share 0 the bits
+    // are then exactly those the same lines set in the whole bake). Empty: every region's.
+    std::span<const uint32_t> sources;
     std::function<bool(double fraction)> progress;
     std::function<void(const ReferenceRound& round, const Pvs& rows)> on_round;
 };

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The sharded bake against the one-machine bake on every format pvscope writes: for each zone, the
-# raster bake whole, then as N = 1, 2, 7 and 16 shards merged (the shards one after the other on
+# raster bake (METHOD=reference: the per-source reference at 32 lines a region) whole, then as
+# N = 1, 2, 7 and 16 shards merged (the shards one after the other on
 # this machine); prints one line per zone and N with the merged file's first bytes of SHA-256 and
 # "same" or "DIFFERENT". Exit 1 when any file differs.
 #   tests/bench/tools/shard_identity.sh BUILD_DIR [SHARED_DATA_DIR]
@@ -11,6 +12,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 raster=(--method raster --resolution 8 --points 2 --threads 2)
+if [ "${METHOD:-raster}" = reference ]; then
+  raster=(--method reference --samples 32 --per-source --threads 2)
+fi
 different=0
 
 check() { # NAME ZONE EXT [zone options]
@@ -39,7 +43,7 @@ check "e1m1 (BSP 29)" "$shared/quake/e1m1.bsp" bsp
 check "lqdm2 (BSP2)" "$shared/modern-quake/q1/lqdm2-bsp2.bsp" bsp
 check "lqdm2 (2PSB)" "$shared/modern-quake/q1/lqdm2-2psb.bsp" bsp
 check "lqdm2 (Quake 2 IBSP)" "$shared/modern-quake/q2/lqdm2-q2.bsp" bsp
-check "E1M1.obj (.hepvs)" "$shared/hateengine/E1M1.obj" hepvs --cell 16 --grid-size 16
+[ "${METHOD:-raster}" = reference ] || check "E1M1.obj (.hepvs)" "$shared/hateengine/E1M1.obj" hepvs --cell 16 --grid-size 16
 if [ -f /usr/share/games/doom/freedoom2.wad ] && command -v glbsp > /dev/null; then
   cp /usr/share/games/doom/freedoom2.wad fd2.wad
   glbsp -q fd2.wad -o fd2.gwa > /dev/null 2>&1
