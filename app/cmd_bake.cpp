@@ -84,10 +84,12 @@ int run_shard(const BakeOptions& o, const BakeInput& in, const VisMethod& method
     const ShardSpec shard = *parse_shard_spec(o.shard);
     const std::vector<double> costs = method.source_costs(in.zone, settings);
     const std::vector<uint32_t> sources = shard_sources(costs, shard);
-    const uint32_t rows = in.zone.view_grid ? uint32_t(in.zone.view_grid->cell_count()) : uint32_t(in.zone.region_count());
+    const uint32_t rows =
+        in.zone.view_grid ? uint32_t(in.zone.view_grid->cell_count()) : uint32_t(in.zone.region_count());
     std::optional<Pvs> pvs;
     if (sources.empty()) { // more shards than rows: an empty part, and nothing baked (empty sources = every row)
-        pvs = Pvs::build_rows(rows, uint32_t(in.zone.region_count()), [](uint32_t, std::span<uint64_t>) { return true; });
+        pvs =
+            Pvs::build_rows(rows, uint32_t(in.zone.region_count()), [](uint32_t, std::span<uint64_t>) { return true; });
     } else {
         settings.sources = sources;
         MethodRun run = run_method(method, in.zone, settings, err, cancel);
@@ -103,18 +105,25 @@ int run_shard(const BakeOptions& o, const BakeInput& in, const VisMethod& method
         every_row.resize(rows);
         std::iota(every_row.begin(), every_row.end(), 0u);
     }
-    const PvsPart part = make_pvs_part(*pvs, method.shard_rows_union ? every_row : sources, shard, bake_zone_hash(o, in),
-                                       bake_settings_text(o), method.shard_rows_union ? PartRows::Union : PartRows::Own);
+    const PvsPart part =
+        make_pvs_part(*pvs, method.shard_rows_union ? every_row : sources, shard, bake_zone_hash(o, in),
+                      bake_settings_text(o), method.shard_rows_union ? PartRows::Union : PartRows::Own);
     replace_atomically(o.output, encode_pvs_part(part));
     double cost = 0;
     for (uint32_t s : sources)
         cost += costs[s];
-    std::fprintf(err, "wrote %s: shard %u of %u, %zu of %u sources (cost %.0f of %.0f)\n", o.output.c_str(), shard.index,
-                 shard.count, sources.size(), rows, cost, std::accumulate(costs.begin(), costs.end(), 0.0));
+    std::fprintf(err, "wrote %s: shard %u of %u, %zu of %u sources (cost %.0f of %.0f)\n", o.output.c_str(),
+                 shard.index, shard.count, sources.size(), rows, cost,
+                 std::accumulate(costs.begin(), costs.end(), 0.0));
     if (!o.report.empty())
-        write_report(o.report, {{"shard", shard.index}, {"shards", shard.count}, {"method", o.method},
-                                {"sources", sources.size()}, {"rows_total", rows}, {"cost", cost},
-                                {"seconds", seconds_since(start)}, {"cpu_seconds", process_cpu_seconds()},
+        write_report(o.report, {{"shard", shard.index},
+                                {"shards", shard.count},
+                                {"method", o.method},
+                                {"sources", sources.size()},
+                                {"rows_total", rows},
+                                {"cost", cost},
+                                {"seconds", seconds_since(start)},
+                                {"cpu_seconds", process_cpu_seconds()},
                                 {"peak_rss_bytes", peak_rss_bytes()}});
     return 0;
 }

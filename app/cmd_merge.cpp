@@ -48,7 +48,8 @@ void check_parts_fit(const std::vector<NamedPart>& parts)
             mismatch(24, "it is a shard of " + std::to_string(p.part.shards) + ", not of " +
                              std::to_string(first.part.shards));
         if (p.part.zone_hash != first.part.zone_hash)
-            mismatch(12, "baked from another zone (hash " + hex(p.part.zone_hash) + ", not " + hex(first.part.zone_hash) + ")");
+            mismatch(12, "baked from another zone (hash " + hex(p.part.zone_hash) + ", not " +
+                             hex(first.part.zone_hash) + ")");
         if (p.part.settings != first.part.settings)
             mismatch(36, "baked with other settings: " + p.part.settings + " against " + first.part.settings);
         if (p.part.row_count != first.part.row_count || p.part.region_count != first.part.region_count)
@@ -75,7 +76,8 @@ Pvs union_rows(const std::vector<NamedPart>& parts)
     for (const NamedPart& p : parts)
         if (p.part.sources.size() != first.row_count)
             throw FileError(p.file, 0,
-                            "holds " + std::to_string(p.part.sources.size()) + " of " + std::to_string(first.row_count) +
+                            "holds " + std::to_string(p.part.sources.size()) + " of " +
+                                std::to_string(first.row_count) +
                                 " rows, but its rows are to be ORed with the other parts' (it must hold every row)");
     const size_t words = first.words_per_row();
     return Pvs::build_rows(first.row_count, first.region_count, [&](uint32_t r, std::span<uint64_t> out) {
@@ -128,7 +130,9 @@ int run_checked(const MergeOptions& m, std::FILE* err)
     std::atomic<bool> stop{false};
     parallel_items(
         parts.size(), 0, {}, [] { return 0.0; }, stop, [] { return 0; },
-        [&](size_t i, int) { parts[i] = {m.parts[i], decode_pvs_part(read_whole_file(m.parts[i]), m.parts[i])}; });
+        [&](size_t i, int) {
+            parts[i] = {m.parts[i], decode_pvs_part(read_whole_file(m.parts[i]), m.parts[i])};
+        });
     check_parts_fit(parts);
     BakeOptions o = options_from_settings(parts.front().part.settings, parts.front().file);
     o.input = m.zone;
@@ -145,10 +149,12 @@ int run_checked(const MergeOptions& m, std::FILE* err)
         throw FileError(m.zone, 0,
                         "is not the zone the parts were baked from (its hash is " + hex(hash) + ", the parts' " +
                             hex(parts.front().part.zone_hash) + ")");
-    const uint32_t rows = in.zone.view_grid ? uint32_t(in.zone.view_grid->cell_count()) : uint32_t(in.zone.region_count());
+    const uint32_t rows =
+        in.zone.view_grid ? uint32_t(in.zone.view_grid->cell_count()) : uint32_t(in.zone.region_count());
     if (parts.front().part.row_count != rows || parts.front().part.region_count != in.zone.region_count())
-        throw FileError(parts.front().file, 28, "rows for a zone of " + std::to_string(parts.front().part.row_count) +
-                                                    " rows, but " + m.zone + " has " + std::to_string(rows));
+        throw FileError(parts.front().file, 28,
+                        "rows for a zone of " + std::to_string(parts.front().part.row_count) + " rows, but " + m.zone +
+                            " has " + std::to_string(rows));
     const double load_seconds = seconds_since(load_start);
     const auto join_start = std::chrono::steady_clock::now();
     Pvs pvs = join_rows(parts);

@@ -1,23 +1,23 @@
 // pvscope: inspector and command-line tool for visibility culling in classic 3-D worlds.
 // Each subcommand lives in its own cmd_*.cpp; this file only wires them together. The inspector
 // window is the pvscope-inspector executable (inspector_main.cpp), which this one starts.
-#include "app/exit_codes.h"
 #include "app/cmd_bake.h"
-#include "app/cmd_merge.h"
 #include "app/cmd_check.h"
-#include "app/cmd_why.h"
 #include "app/cmd_compare.h"
-#include "app/cmd_stability.h"
 #include "app/cmd_convert.h"
 #include "app/cmd_gen.h"
 #include "app/cmd_info.h"
 #include "app/cmd_inspect.h"
-#include "app/inspector_launch.h"
-#include "app/process_memory.h"
+#include "app/cmd_merge.h"
 #include "app/cmd_render.h"
+#include "app/cmd_stability.h"
 #include "app/cmd_stats.h"
 #include "app/cmd_vis.h"
 #include "app/cmd_walk.h"
+#include "app/cmd_why.h"
+#include "app/exit_codes.h"
+#include "app/inspector_launch.h"
+#include "app/process_memory.h"
 
 #include <CLI/CLI.hpp>
 #include <algorithm>

@@ -108,8 +108,9 @@ PvsPart decode_pvs_part(std::span<const uint8_t> bytes, const std::string& name)
     if (std::memcmp(magic.data(), kMagic, 8) != 0)
         throw FileError(name, 0, "not a pvscope part file (no PVSPART1 magic)");
     if (const uint32_t version = in.u32("the version"); version != kVersion)
-        throw FileError(name, 8, "part file version " + std::to_string(version) + ", this pvscope reads " +
-                                     std::to_string(kVersion));
+        throw FileError(name, 8,
+                        "part file version " + std::to_string(version) + ", this pvscope reads " +
+                            std::to_string(kVersion));
     PvsPart part;
     part.zone_hash = in.u64("the zone hash");
     part.shard = in.u32("the shard");
@@ -132,7 +133,8 @@ PvsPart decode_pvs_part(std::span<const uint8_t> bytes, const std::string& name)
     const uint32_t source_count = in.u32("the source count");
     if (source_count > part.row_count)
         throw FileError(name, count_at,
-                        std::to_string(source_count) + " sources of a zone of " + std::to_string(part.row_count) + " rows");
+                        std::to_string(source_count) + " sources of a zone of " + std::to_string(part.row_count) +
+                            " rows");
     if (uint64_t(source_count) * 4 > in.left())
         in.fail("truncated: " + std::to_string(source_count) + " sources need " + std::to_string(4ull * source_count) +
                 " bytes");
@@ -156,9 +158,9 @@ PvsPart decode_pvs_part(std::span<const uint8_t> bytes, const std::string& name)
     const uint64_t raw_size = uint64_t(source_count) * part.words_per_row() * 8;
     // zlib packs at best about 1000:1; a claim beyond that is a corrupt header, not a big zone.
     if (raw_size > 1032 * packed_size + 64)
-        throw FileError(name, packed_at, std::to_string(source_count) + " rows of " +
-                                             std::to_string(part.region_count) + " bits cannot be packed in " +
-                                             std::to_string(packed_size) + " bytes");
+        throw FileError(name, packed_at,
+                        std::to_string(source_count) + " rows of " + std::to_string(part.region_count) +
+                            " bits cannot be packed in " + std::to_string(packed_size) + " bytes");
     std::vector<uint8_t> raw(raw_size);
     uLongf got = uLongf(raw_size);
     if (uncompress(raw.data(), &got, packed.data(), uLong(packed.size())) != Z_OK || got != raw_size)

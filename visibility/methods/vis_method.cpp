@@ -350,21 +350,23 @@ constexpr VisMethod kMethods[] = {
     {"portal-fast", "base portal vis: loose, conservative", Bound::Upper, true, false, run_portal_fast, no_label,
      nullptr, "its rows are unions of the directed portals' base vis, computed in batches over every portal"},
     {"portal-full", "clipped portal flow (as Quake's vis): conservative", Bound::Upper, true, false, run_portal_full,
-     full_label,
-     nullptr, "its flow prunes each portal's walk with the finished rows of the portals ranked before it, so a shard on its own would bake other rows"},
+     full_label, nullptr,
+     "its flow prunes each portal's walk with the finished rows of the portals ranked before it, so a shard on its own "
+     "would bake other rows"},
     {"clustered", "portal-full over clusters of regions: faster on big zones, looser", Bound::Upper, true, true,
-     run_clustered, full_label,
-     nullptr, "its flow prunes each portal's walk with the finished rows of the portals ranked before it, so a shard on its own would bake other rows"},
+     run_clustered, full_label, nullptr,
+     "its flow prunes each portal's walk with the finished rows of the portals ranked before it, so a shard on its own "
+     "would bake other rows"},
     {"terrain", "horizon over the zone's heightfield (open ground): conservative, hides only what hills hide",
-     Bound::Upper, true, true, run_terrain, no_label,
-     nullptr, "each row is a source's horizon intersected with the transposed rows, which need every source"},
+     Bound::Upper, true, true, run_terrain, no_label, nullptr,
+     "each row is a source's horizon intersected with the transposed rows, which need every source"},
     {"reference", "sampled sight lines through the tree: ground truth from below (can pop)", Bound::Lower, true, true,
      run_reference, reference_label, reference_source_costs,
      "each round's walks aim by the rows every region found in the rounds before (--per-source and --samples N make "
      "each region's lines its own)",
      true},
-    {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop",
-     Bound::Lower, true, true, run_raster, raster_label, raster_source_costs},
+    {"raster", "cube maps rendered from points in each cell (as HateEngine's baker): a sample, can pop", Bound::Lower,
+     true, true, run_raster, raster_label, raster_source_costs},
 };
 
 } // namespace

@@ -164,7 +164,8 @@ void witness_source_pairs(const TreeTracer& tracer, const glm::dvec3& point, con
             const uint32_t other = regions[j];
             if (other == source || proven.test(source, other))
                 continue;
-            const double t0 = std::min(stretch.t_mid[i], stretch.t_mid[j]), t1 = std::max(stretch.t_mid[i], stretch.t_mid[j]);
+            const double t0 = std::min(stretch.t_mid[i], stretch.t_mid[j]),
+                         t1 = std::max(stretch.t_mid[i], stretch.t_mid[j]);
             if (tracer.open_beam(point + t0 * direction, direction, t1 - t0, kBeamMargin, scratch))
                 proven.set(source, other);
         }

@@ -13,13 +13,13 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <mutex>
 #include <optional>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace pvs {
@@ -218,9 +218,9 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
         regions_with_portals += portals.links(source(i)).empty() ? 0 : 1;
         sources_with_volume += volumes.has_volume(source(i)) ? 1 : 0;
     }
-    const double planned = double(sources_with_volume) * double(max_samples) +
-                           kWalkCost * double(regions_with_portals) * double(params.initial_walks) *
-                               double(max_samples / initial);
+    const double planned =
+        double(sources_with_volume) * double(max_samples) +
+        kWalkCost * double(regions_with_portals) * double(params.initial_walks) * double(max_samples / initial);
     auto fraction = [&] {
         const double done = double(shared.lines.load()) + kWalkCost * double(shared.walks.load());
         return planned > 0 ? std::min(1.0, done / planned) : 1.0;
@@ -233,18 +233,16 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
         shared.before = before;
         ReferenceRound summary;
         // Volume lines: the next indices of every region's stream, up to `end` in all.
-        cancelled = !parallel_items(shared, source_count, report.threads, params.progress, fraction,
-                                    [&](size_t i, Scratch& scratch) {
-                                        sample_volume(shared, source(i), first, end, scratch);
-                                    });
+        cancelled =
+            !parallel_items(shared, source_count, report.threads, params.progress, fraction,
+                            [&](size_t i, Scratch& scratch) { sample_volume(shared, source(i), first, end, scratch); });
         // Walks: the next eyes of every region's stream, doubling like the volume lines.
         const uint64_t walks_end = uint64_t(params.initial_walks) << round;
         if (!cancelled && walks_end > 0)
-            cancelled = !parallel_items(shared, source_count, report.threads, params.progress, fraction,
-                                        [&](size_t i, Scratch& scratch) {
-                                            sample_walks(shared, source(i), round == 0 ? 0 : walks_end / 2, walks_end,
-                                                         scratch);
-                                        });
+            cancelled = !parallel_items(
+                shared, source_count, report.threads, params.progress, fraction, [&](size_t i, Scratch& scratch) {
+                    sample_walks(shared, source(i), round == 0 ? 0 : walks_end / 2, walks_end, scratch);
+                });
         if (cancelled)
             break;
         summary.samples_per_region = end;
@@ -275,8 +273,8 @@ Pvs bake_reference_vis(const Zone& zone, const ReferenceParams& params, Referenc
     report.truncated_walks = shared.truncated_walks.load();
     report.seconds = seconds_since(start);
     report.mean_visible = regions ? double(rows.count()) / double(regions) : 0.0;
-    report.peak_bytes_estimate = 2 * rows.memory_bytes() + (own ? own->memory_bytes() : 0) +
-                                 volumes.memory_bytes() + portals.memory_bytes() + pvs.memory_bytes();
+    report.peak_bytes_estimate = 2 * rows.memory_bytes() + (own ? own->memory_bytes() : 0) + volumes.memory_bytes() +
+                                 portals.memory_bytes() + pvs.memory_bytes();
     if (report_out)
         *report_out = std::move(report);
     return pvs;

@@ -16,8 +16,9 @@
 // itself such a segment (and the content rule is symmetric). So a ray crossing k regions may set
 // the k x k pairs among them, rows and columns alike; a pair is set only when its segment is open
 // as a beam kBeamMargin wide (line_witness.h: lines that only graze a corner or slip through a
-// sub-epsilon gap prove nothing). Every bit set is witnessed by a segment through open space: the result is a LOWER bound of the true PVS (what a PVS must contain not to pop),
-// where a conservative portal vis is an upper bound. Symmetric by construction.
+// sub-epsilon gap prove nothing). Every bit set is witnessed by a segment through open space: the result is a LOWER
+// bound of the true PVS (what a PVS must contain not to pop), where a conservative portal vis is an upper bound.
+// Symmetric by construction.
 //
 // Walks. Volume lines find wide openings quickly and narrow ones (a sight line through two
 // doorways far apart) slowly: both ends must fall in the thin set of lines that pass. So each round

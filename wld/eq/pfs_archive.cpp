@@ -1,11 +1,11 @@
 #include "wld/eq/pfs_archive.h"
 
 #include "visibility/file_error.h"
+#include "visibility/worker_pool.h"
 #include "wld/common/byte_reader.h"
 #include "wld/common/quote.h"
 #include "wld/common/read_file.h"
 #include "wld/eq/pfs_crc.h"
-#include "visibility/worker_pool.h"
 
 #define ZLIB_CONST // next_in is a pointer to const, so the archive's bytes need no cast
 #include <zlib.h>
@@ -443,13 +443,14 @@ void write_run(std::vector<uint8_t>& out, std::span<const uint8_t> data, int lev
             const size_t at = block * kPfsMaxBlockSize;
             const size_t length = std::min<size_t>(kPfsMaxBlockSize, data.size() - at);
             uLongf compressed_length = static_cast<uLongf>(compressed.size());
-            const int result = compress2(compressed.data(), &compressed_length, data.data() + at,
-                                         static_cast<uLong>(length), level);
+            const int result =
+                compress2(compressed.data(), &compressed_length, data.data() + at, static_cast<uLong>(length), level);
             if (result == Z_MEM_ERROR)
                 throw std::bad_alloc();
             if (result != Z_OK)
                 throw std::logic_error("write_pfs: compress2 failed with " + std::to_string(result));
-            packed[block].assign(compressed.begin(), compressed.begin() + static_cast<std::ptrdiff_t>(compressed_length));
+            packed[block].assign(compressed.begin(),
+                                 compressed.begin() + static_cast<std::ptrdiff_t>(compressed_length));
         });
     for (size_t block = 0; block < blocks; ++block) {
         const size_t length = std::min<size_t>(kPfsMaxBlockSize, data.size() - block * kPfsMaxBlockSize);
