@@ -172,6 +172,15 @@ PvsPart decode_pvs_part(std::span<const uint8_t> bytes, const std::string& name)
             w = w << 8 | raw[8 * i + size_t(b)];
         part.rows[i] = w;
     }
+    // A bit past the last region would name a region the zone has not: refused, not written.
+    const size_t words = part.words_per_row();
+    const unsigned used = part.region_count % 64;
+    if (used != 0)
+        for (size_t r = 0; r < source_count; ++r)
+            if (part.rows[r * words + words - 1] >> used)
+                throw FileError(name, packed_at + 8,
+                                "row " + std::to_string(part.sources[r]) + " sets a bit past region " +
+                                    std::to_string(part.region_count - 1));
     return part;
 }
 

@@ -14,7 +14,7 @@
 //   ..  u32      S, then S u32: the rows this shard computed, ascending, each < rows
 //   ..  u64      L, then L bytes: zlib of the S rows, words_for(regions) u64 each
 //
-// Nothing may follow. Reading throws FileError naming the file, the offset and the problem; a
+// Nothing may follow, and no row sets a bit past the last region. Reading throws FileError naming the file, the offset and the problem; a
 // hostile length never allocates more than the file could hold.
 #pragma once
 

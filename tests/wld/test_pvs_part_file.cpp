@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <string>
 
 namespace pvs::test {
 namespace {
@@ -105,6 +106,36 @@ TEST(PvsPartFile, HostileHeadersAreRefusedWithTheirOffset)
     for (size_t i = packed_at + 2; i < bytes.size(); ++i)
         bytes[i] ^= 0x5a;
     EXPECT_THROW(decode_pvs_part(bytes, "zlib.pvsp"), FileError);
+}
+
+TEST(PvsPartFile, EveryByteFlippedIsReadOrRefusedNeverACrash)
+{
+    const std::vector<uint8_t> good = encode_pvs_part(sample_part());
+    size_t refused = 0;
+    for (size_t at = 0; at < good.size(); ++at) {
+        std::vector<uint8_t> bytes = good;
+        bytes[at] ^= 0xff;
+        try {
+            const PvsPart part = decode_pvs_part(bytes, "flip.pvsp");
+            EXPECT_EQ(part.rows.size(), part.sources.size() * part.words_per_row()) << "flip at " << at;
+        } catch (const FileError& e) {
+            EXPECT_EQ(e.file(), "flip.pvsp");
+            ++refused;
+        }
+    }
+    EXPECT_GT(refused, good.size() / 2) << "most flips break a checked field or the zlib stream";
+}
+
+TEST(PvsPartFile, ABitPastTheLastRegionIsRefused)
+{
+    PvsPart part = sample_part();
+    part.rows[2] |= uint64_t{1} << 2; // row 0's third word: region 130 of 130
+    try {
+        decode_pvs_part(encode_pvs_part(part), "past.pvsp");
+        ADD_FAILURE() << "a bit past the last region was read";
+    } catch (const FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("past region 129"), std::string::npos) << e.what();
+    }
 }
 
 TEST(PvsPartFile, FnvKnownAnswers)
