@@ -14,8 +14,9 @@
 //   ..  u32      S, then S u32: the rows this shard computed, ascending, each < rows
 //   ..  u64      L, then L bytes: zlib of the S rows, words_for(regions) u64 each
 //
-// Nothing may follow, and no row sets a bit past the last region. Reading throws FileError naming the file, the offset and the problem; a
-// hostile length never allocates more than the file could hold.
+// Nothing may follow, and no row sets a bit past the last region. Reading throws FileError
+// naming the file, the offset and the problem; a hostile length never allocates more than the
+// file could hold.
 #pragma once
 
 #include <cstdint>
