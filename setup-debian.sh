@@ -10,6 +10,9 @@ packages=(
   libirrlicht-dev libglfw3-dev libimgui-dev libsquish-dev libtinyobjloader-dev libembree-dev
   libcairo2-dev
   libgl-dev xvfb xauth libgl1-mesa-dri
+  # The raster baker's GPU path (visibility/raster/gl_headless.h): EGL's headers, and Mesa's EGL
+  # with llvmpipe, the software GPU its tests run on.
+  libegl-dev libegl1 libegl-mesa0
   freedoom glbsp zdbsp
   # The fuzz smoke (tests/fuzz/run-smoke.sh): clang 14 and its compiler-rt, which holds
   # libFuzzer (libclang_rt.fuzzer-x86_64.a) and is only a recommendation of clang-14.

@@ -26,6 +26,9 @@ std::string check_shard_options(const BakeOptions& o)
     if (o.in_place || !o.apply_edits.empty() || !o.prt_out.empty())
         return "--shard writes a part file only: --in-place, --apply-edits and --write-prt belong to the whole bake "
                "(give --apply-edits to `pvscope merge`)";
+    if (o.device == "auto")
+        return "--shard with --device auto: name the device (cpu or gpu), so that every shard draws alike and the "
+               "merge is the one-machine bake's bytes";
     if (lowercase_extension(o.output) != ".pvsp")
         return "--shard: the output is a part file, so -o must end in .pvsp, not '" + o.output + "'";
     return {};
@@ -48,6 +51,10 @@ std::string check_bake_options(const BakeOptions& o)
         return "--method must be portal-fast, portal-full, clustered, reference or raster, not '" + o.method + "'";
     if (o.method == "raster" && (o.resolution < 1 || o.resolution > 4096))
         return "--resolution must be 1..4096, not " + std::to_string(o.resolution);
+    if (o.device != "cpu" && o.device != "gpu" && o.device != "auto")
+        return "--device must be cpu, gpu or auto, not '" + o.device + "'";
+    if (o.device != "cpu" && o.method != "raster")
+        return "--device " + o.device + ": only the raster method draws on a GPU";
     if (o.lattice != "open" && o.lattice != "centred" && o.lattice != "hateengine")
         return "--lattice must be open, centred or hateengine, not '" + o.lattice + "'";
     if (!(o.step >= 0.0f) || !(o.cell >= 0.0f) || !(o.grid_size > 0.0f))
@@ -95,6 +102,10 @@ MethodSettings bake_method_settings(const BakeOptions& o)
     settings.reference_per_source = o.per_source;
     settings.raster_resolution = o.resolution;
     settings.raster_engine = o.raster_engine == "rasteriser" ? RasterEngine::Rasteriser : RasterEngine::Rays;
+    settings.raster_device = o.device == "gpu"    ? RasterDevice::Gpu
+                             : o.device == "auto" ? RasterDevice::Auto
+                                                  : RasterDevice::Cpu;
+    settings.raster_gpu_batch = o.gpu_batch;
     settings.raster_points = o.points;
     settings.raster_step = o.step;
     settings.raster_lattice = o.lattice == "hateengine" ? Lattice::HateEngine

@@ -34,6 +34,8 @@ struct BakeOptions {
     float step = 0.0f;
     std::string lattice = "open";       // grid cells: open (random points in open space), centred, hateengine
     std::string raster_engine = "rays"; // rays (Embree packets) or rasteriser
+    std::string device = "cpu";         // raster: cpu, gpu (headless OpenGL through EGL) or auto
+    uint32_t gpu_batch = 0;             // raster on the GPU: views per compute pass (0: as many as fit)
     bool cull_back_faces = true;
     // OBJ levels: the view grid's cell in grid units (0: the .hepvs's grid, else 8) and the OBJ
     // units per grid unit; the input's .hepvs when not beside it.

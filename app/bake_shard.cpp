@@ -62,6 +62,7 @@ std::string bake_settings_text(const BakeOptions& o)
     j["step"] = o.step;
     j["lattice"] = o.lattice;
     j["engine"] = o.raster_engine;
+    j["device"] = o.device; // the batch changes no bit (gpu_cube.h): not a setting
     j["back_faces"] = o.cull_back_faces;
     j["cell"] = o.cell;
     j["grid_size"] = o.grid_size;
@@ -97,6 +98,7 @@ BakeOptions options_from_settings(const std::string& text, const std::string& pa
         o.step = j.at("step").get<float>();
         o.lattice = j.at("lattice").get<std::string>();
         o.raster_engine = j.at("engine").get<std::string>();
+        o.device = j.value("device", std::string("cpu"));
         o.cull_back_faces = j.at("back_faces").get<bool>();
         o.cell = j.at("cell").get<float>();
         o.grid_size = j.at("grid_size").get<float>();

@@ -101,6 +101,16 @@ void register_bake_command(CLI::App& app, int& exit_code)
                     "or rasteriser (pvscope's CPU rasteriser; the same pixel centres)")
         ->check(CLI::IsMember({"rays", "rasteriser"}))
         ->capture_default_str();
+    cmd->add_option("--device", o->device,
+                    "raster: where the views are drawn: cpu, gpu (a headless OpenGL 4.5 context through EGL, no "
+                    "display needed; Mesa's llvmpipe counts) or auto (the GPU when one answers, else the CPU; the "
+                    "summary says which ran). GPU rows differ from the CPU's only where a triangle edge crosses a "
+                    "pixel centre")
+        ->check(CLI::IsMember({"cpu", "gpu", "auto"}))
+        ->capture_default_str();
+    cmd->add_option("--gpu-batch", o->gpu_batch,
+                    "raster on the GPU: views drawn per compute pass (0: as many as fit in 256 MiB; smaller when "
+                    "the GPU runs out of memory). Changes no bit");
     cmd->add_option("--points", o->points,
                     "raster: sample points in each region, or in the open space of each grid "
                     "cell (--lattice open)")

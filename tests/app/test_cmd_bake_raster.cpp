@@ -2,16 +2,24 @@
 //  - on the HateEngine E1M1.obj with --cell 8 --grid-size 16: a .hepvs on the shared file's own
 //    grid (min, cell size, counts), over the OBJ's object names, readable back with the OBJ;
 //  - on a generated .s3d (regions as cells): the zone written back with the raster rows;
-//  - an OBJ level asked for a portal method is refused with the reason (no BSP tree).
+//  - an OBJ level asked for a portal method is refused with the reason (no BSP tree);
+//  - --device: gpu draws on the GPU (the summary names it) and writes the rows the GPU path
+//    bakes; refused for methods that draw nothing and for shards that could draw on different
+//    devices (auto).
 #include "app/cmd_bake.h"
 
+#include "app/bake_options.h"
 #include "tests/app/bake_command_fixture.h"
 #include "tests/support/test_data.h"
+#include "visibility/methods/vis_method.h"
+#include "visibility/raster/gl_headless.h"
 #include "wld/common/read_file.h"
 #include "wld/hepvs/hepvs_file.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
+
+#include <cstdlib>
 
 namespace pvs::test {
 namespace {
@@ -63,6 +71,46 @@ TEST_F(BakeRaster, GeneratedZoneOverRegions)
     const Zone back = load_zone(o.output);
     ASSERT_TRUE(back.baked_pvs);
     EXPECT_EQ(back.baked_pvs->row_count(), back.region_count());
+}
+
+TEST_F(BakeRaster, DeviceChoice)
+{
+    app::BakeOptions o = bake_generated({8, 3}, "gpu.s3d");
+    o.method = "portal-full";
+    o.device = "gpu";
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("only the raster method draws on a GPU"), std::string::npos) << err_;
+    o.method = "raster";
+    o.device = "auto";
+    o.shard = "0/2";
+    o.output = path("part.pvsp");
+    EXPECT_EQ(run(o), 2);
+    EXPECT_NE(err_.find("name the device"), std::string::npos) << err_;
+    o.shard.clear();
+    o.output = path("gpu.s3d");
+    o.device = "sideways";
+    EXPECT_EQ(run(o), 2);
+
+    try {
+        GlHeadless::open();
+    } catch (const GlUnavailable& e) {
+        if (const char* r = std::getenv("PVSCOPE_REQUIRE_GPU_DRIVER"); r && std::string(r) == "1")
+            FAIL() << "no GPU driver (PVSCOPE_REQUIRE_GPU_DRIVER=1): " << e.what();
+        GTEST_SKIP() << "SKIPPED: no GPU driver: " << e.what();
+    }
+    o.device = "gpu";
+    o.resolution = 16;
+    o.points = 4;
+    ASSERT_EQ(run(o), 0) << err_;
+    EXPECT_NE(err_.find("(gpu: "), std::string::npos) << err_;
+    const Zone back = load_zone(o.output);
+    ASSERT_TRUE(back.baked_pvs);
+    MethodSettings settings = app::bake_method_settings(o);
+    const MethodRun direct = find_vis_method("raster")->run(load_zone(o.input), settings);
+    ASSERT_TRUE(direct.pvs);
+    for (uint32_t r = 0; r < back.region_count(); ++r)
+        for (uint32_t s = 0; s < back.region_count(); ++s)
+            ASSERT_EQ(back.baked_pvs->visible(r, s), direct.pvs->visible(r, s)) << r << " -> " << s;
 }
 
 } // namespace

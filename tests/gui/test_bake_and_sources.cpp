@@ -2,16 +2,18 @@
 // start, a second start refused while running, completion with the same PVS as calling the
 // baker directly, cancel at a known point (the first progress call), the zone replaced while a
 // bake runs; then the inspector's PVS source switch and the PVS diff helpers.
+#include "gen/generate_zone.h"
 #include "ui/gui/bake_job.h"
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/pvs_rows.h"
 #include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
-#include "gen/generate_zone.h"
+#include "visibility/raster/gl_headless.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <future>
 #include <thread>
 
@@ -115,6 +117,33 @@ TEST(BakeJob, RunsEveryBakingMethodOfTheRegistry)
     ASSERT_TRUE(job.start(zone, unknown));
     EXPECT_EQ(wait(job), JobStatus::Failed);
     EXPECT_NE(job.error().find("portal-full"), std::string::npos) << job.error();
+}
+
+// The panel's device choice: a raster bake on the GPU from the job's own thread (its own EGL
+// context there) gives the rows the same bake gives on the calling thread, and says it ran on
+// the GPU. Skips without a GPU driver unless PVSCOPE_REQUIRE_GPU_DRIVER=1 (CI: llvmpipe).
+TEST(BakeJob, RasterOnTheGpuFromTheJobThread)
+{
+    try {
+        GlHeadless::open();
+    } catch (const GlUnavailable& e) {
+        if (const char* r = std::getenv("PVSCOPE_REQUIRE_GPU_DRIVER"); r && std::string(r) == "1")
+            FAIL() << "no GPU driver (PVSCOPE_REQUIRE_GPU_DRIVER=1): " << e.what();
+        GTEST_SKIP() << "SKIPPED: no GPU driver: " << e.what();
+    }
+    const Zone zone = tiny_zone();
+    gui::BakeRequest request;
+    request.method = "raster";
+    request.settings.raster_points = 2;
+    request.settings.raster_resolution = 16;
+    request.settings.raster_device = RasterDevice::Gpu;
+    BakeJob job;
+    ASSERT_TRUE(job.start(zone, request));
+    ASSERT_EQ(wait(job), JobStatus::Done) << job.error();
+    const MethodRun direct = find_vis_method("raster")->run(zone, request.settings);
+    ASSERT_TRUE(job.result() && direct.pvs);
+    EXPECT_EQ(all_rows(*job.result()), all_rows(*direct.pvs));
+    EXPECT_NE(direct.summary.find("gpu: "), std::string::npos) << direct.summary;
 }
 
 TEST(BakeJob, RefusesASecondStartWhileRunning)

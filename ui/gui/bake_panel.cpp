@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <string>
 #include <thread>
+#include <utility>
 
 namespace pvs::gui {
 
@@ -76,6 +77,17 @@ void draw_method_settings(const Zone& zone, BakeRequest& r)
     if (r.method == "raster") {
         input_unsigned("pixels per face side", s.raster_resolution, 8, 1024);
         input_unsigned("points per region", s.raster_points, 1, 4096);
+        // Where the views are drawn (raster_vis.h): the summary after the bake says which ran.
+        int device = int(s.raster_device);
+        ImGui::TextUnformatted("device");
+        for (const auto& [label, value] : {std::pair{"CPU", RasterDevice::Cpu}, std::pair{"GPU", RasterDevice::Gpu},
+                                           std::pair{"auto", RasterDevice::Auto}}) {
+            ImGui::SameLine();
+            ImGui::RadioButton(label, &device, int(value));
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("auto: the GPU when one answers through EGL, else the CPU");
+        s.raster_device = RasterDevice(device);
     }
     int threads = int(s.threads);
     const int cores = int(std::max(1u, std::thread::hardware_concurrency()));

@@ -286,6 +286,8 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     params.raster.resolution = s.raster_resolution;
     params.raster.cull_back_faces = s.cull_back_faces;
     params.engine = s.raster_engine;
+    params.device = s.raster_device;
+    params.gpu_batch_views = s.raster_gpu_batch;
     params.step = s.raster_step;
     params.lattice = s.raster_lattice;
     params.points_per_region = s.raster_points;
@@ -301,11 +303,17 @@ MethodRun run_raster(const Zone& zone, const MethodSettings& s)
     run.cancelled = report.cancelled;
     run.peak_bytes_estimate = size_t(report.threads) * 7 * size_t(s.raster_resolution) * s.raster_resolution * 8 +
                               pvs.memory_bytes();
-    run.summary = format("raster: %s points in %s %s, %ux%u per cube face (%s), mean %.1f visible, %.2f s on %u threads",
+    const std::string drawn = report.device != "cpu"                  ? report.device
+                              : s.raster_engine == RasterEngine::Rays ? std::string("pixel rays")
+                                                                      : std::string("rasteriser");
+    const std::string where =
+        report.device != "cpu" ? std::string("on the GPU") : "on " + std::to_string(report.threads) + " threads";
+    run.summary = format("raster: %s points in %s %s, %ux%u per cube face (%s), mean %.1f visible, %.2f s %s",
                          std::to_string(report.points).c_str(), std::to_string(report.cells).c_str(),
                          zone.view_grid ? "grid cells" : "regions", s.raster_resolution, s.raster_resolution,
-                         s.raster_engine == RasterEngine::Rays ? "pixel rays" : "rasteriser",
-                         report.mean_visible, report.seconds, report.threads);
+                         drawn.c_str(), report.mean_visible, report.seconds, where.c_str());
+    if (!report.device_note.empty())
+        run.notes.push_back("note: " + report.device_note);
     run.notes.push_back("note: the raster PVS is a sample (what the rendered points saw): a camera between the "
                         "points can see more; denser sampling (--step, --points, --resolution) only adds");
     run.pvs = std::move(pvs);

@@ -84,6 +84,8 @@ struct MethodSettings {
     Lattice raster_lattice = Lattice::OpenRandom; // grid cells (raster_vis.h)
     bool cull_back_faces = true;
     RasterEngine raster_engine = RasterEngine::Rays; // pixel rays (Embree packets) or the rasteriser
+    RasterDevice raster_device = RasterDevice::Cpu;  // where the views are drawn (raster_vis.h)
+    uint32_t raster_gpu_batch = 0;                   // GPU views per compute pass (0: gpu_cube.h's default)
     // A shard's sources (source_shards.h): compute only these rows, the others stay empty. Only
     // for methods with source_costs; empty: every row. Must outlive the run.
     std::span<const uint32_t> sources;

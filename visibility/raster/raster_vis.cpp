@@ -1,5 +1,7 @@
 #include "visibility/raster/raster_vis.h"
 
+#include "visibility/raster/gl_headless.h"
+#include "visibility/raster/gpu_cube.h"
 #include "visibility/raster/ray_cube.h"
 
 #include "visibility/bit_row.h"
@@ -37,6 +39,22 @@ struct Worker {
     }
 };
 
+// The GPU for `device` (gl_headless.h), or null for the CPU: Auto falls back with `note` set to
+// why; Gpu throws GlUnavailable.
+std::unique_ptr<GlHeadless> open_gpu(RasterDevice device, std::string& note)
+{
+    if (device == RasterDevice::Cpu)
+        return nullptr;
+    try {
+        return GlHeadless::open();
+    } catch (const GlUnavailable& e) {
+        if (device == RasterDevice::Gpu)
+            throw;
+        note = std::string("no GPU, the CPU ran: ") + e.what();
+        return nullptr;
+    }
+}
+
 // Bakes `cells` rows: points_of(cell, out) gives each cell's points in zone space.
 template <class PointsOf>
 Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, RasterReport* report, PointsOf&& points_of,
@@ -57,33 +75,54 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
             throw std::invalid_argument("raster: cell " + std::to_string(cell) + " of " + std::to_string(cells));
     const size_t items = params.cells.empty() ? cells : params.cells.size();
     const auto cell_of = [&](size_t item) { return params.cells.empty() ? uint32_t(item) : params.cells[item]; };
-    const bool finished = parallel_items(
-        items, threads, params.progress, [&] { return items ? double(done.load()) / double(items) : 1.0; }, stop,
-        [&] {
-            Worker w;
-            if (params.engine == RasterEngine::Rays)
-                w.rays.emplace(*tracer, params.raster, translucent);
-            else
-                w.raster.emplace(zone, params.raster);
-            w.seen.assign(zone.mesh.faces.size(), 0);
-            return w;
-        },
-        [&](size_t item, Worker& w) {
+    // One cell's row from the faces its points saw.
+    const auto store = [&](uint32_t cell, const std::vector<uint8_t>& seen, size_t eyes) {
+        const std::span<uint64_t> row(rows.data() + size_t(cell) * words, words);
+        for (uint32_t f = 0; f < seen.size(); ++f)
+            if (seen[f])
+                for (uint32_t r : faces.of(f))
+                    bits::set(row, r);
+        if (own_region)
+            bits::set(row, cell);
+        points.fetch_add(eyes, std::memory_order_relaxed);
+        done.fetch_add(1, std::memory_order_relaxed);
+    };
+    std::string device = "cpu", device_note;
+    std::unique_ptr<GlHeadless> gpu = open_gpu(params.device, device_note);
+    bool finished = true;
+    if (gpu) {
+        device = "gpu: " + gpu->description();
+        GpuCube cube(*gpu, zone, params.raster, params.gpu_batch_views);
+        std::vector<uint8_t> seen(zone.mesh.faces.size(), 0);
+        for (size_t item = 0; item < items && finished; ++item) {
             const uint32_t cell = cell_of(item);
-            std::fill(w.seen.begin(), w.seen.end(), 0);
+            std::fill(seen.begin(), seen.end(), 0);
             const std::vector<glm::vec3> eyes = points_of(cell);
-            for (const glm::vec3& eye : eyes)
-                w.render(eye);
-            const std::span<uint64_t> row(rows.data() + size_t(cell) * words, words);
-            for (uint32_t f = 0; f < w.seen.size(); ++f)
-                if (w.seen[f])
-                    for (uint32_t r : faces.of(f))
-                        bits::set(row, r);
-            if (own_region)
-                bits::set(row, cell);
-            points.fetch_add(eyes.size(), std::memory_order_relaxed);
-            done.fetch_add(1, std::memory_order_relaxed);
-        });
+            cube.render(eyes, seen);
+            store(cell, seen, eyes.size());
+            finished = !params.progress || params.progress(double(item + 1) / double(items));
+        }
+    } else {
+        finished = parallel_items(
+            items, threads, params.progress, [&] { return items ? double(done.load()) / double(items) : 1.0; }, stop,
+            [&] {
+                Worker w;
+                if (params.engine == RasterEngine::Rays)
+                    w.rays.emplace(*tracer, params.raster, translucent);
+                else
+                    w.raster.emplace(zone, params.raster);
+                w.seen.assign(zone.mesh.faces.size(), 0);
+                return w;
+            },
+            [&](size_t item, Worker& w) {
+                const uint32_t cell = cell_of(item);
+                std::fill(w.seen.begin(), w.seen.end(), 0);
+                const std::vector<glm::vec3> eyes = points_of(cell);
+                for (const glm::vec3& eye : eyes)
+                    w.render(eye);
+                store(cell, w.seen, eyes.size());
+            });
+    }
     Pvs pvs = Pvs::build_rows(cells, regions, [&](uint32_t c, std::span<uint64_t> out) {
         std::copy_n(rows.begin() + std::ptrdiff_t(size_t(c) * words), words, out.begin());
         return true;
@@ -91,7 +130,9 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     if (report) {
         report->cells = done.load();
         report->points = points.load();
-        report->threads = thread_count(threads, items);
+        report->threads = gpu ? 1 : thread_count(threads, items);
+        report->device = device;
+        report->device_note = device_note;
         report->cancelled = !finished;
         report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         uint64_t bits_set = 0;
@@ -220,7 +261,8 @@ Pvs bake_raster_grid(const Zone& zone, const ViewGrid& grid, const RasterParams&
 {
     check_grid(grid);
     // The mesh's tracer, built once: where open space is (a zone without a tree) and the pixel rays.
-    const std::unique_ptr<MeshTracer> mesh = grid_tracer(zone, params, params.engine == RasterEngine::Rays);
+    const std::unique_ptr<MeshTracer> mesh =
+        grid_tracer(zone, params, params.engine == RasterEngine::Rays && params.device != RasterDevice::Gpu);
     return bake_cells(
         zone, uint32_t(grid.cell_count()), params, report,
         [&](uint32_t cell) { return grid_points(zone, grid, params, mesh.get(), cell); }, false, mesh.get());
@@ -231,7 +273,7 @@ Pvs bake_raster_regions(const Zone& zone, const RasterParams& params, RasterRepo
     check_tree(zone);
     const RegionSampler sampler(zone);
     std::unique_ptr<MeshTracer> mesh; // the pixel rays' tracer, built once for every thread
-    if (params.engine == RasterEngine::Rays)
+    if (params.engine == RasterEngine::Rays && params.device != RasterDevice::Gpu)
         mesh = std::make_unique<MeshTracer>(zone);
     return bake_cells(
         zone, uint32_t(zone.region_count()), params, report,

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace pvs {
@@ -49,6 +50,12 @@ enum class Lattice : uint8_t { Centred, HateEngine, OpenRandom };
 // centres; the faces seen differ only where a triangle edge crosses one.
 enum class RasterEngine : uint8_t { Rays, Rasteriser };
 
+// Where the views are drawn: the CPU (`engine` above, on `threads` cores), a GPU through a
+// headless OpenGL 4.5 context (gpu_cube.h: one thread feeds it; on Mesa's llvmpipe the driver's
+// own threads rasterise), or Auto: the GPU when one answers, else the CPU (the report says which
+// ran and why). Gpu throws GlUnavailable (gl_headless.h) when none answers.
+enum class RasterDevice : uint8_t { Cpu, Gpu, Auto };
+
 struct RasterParams {
     CubeRasterOptions raster;
     RasterEngine engine = RasterEngine::Rays;
@@ -62,6 +69,8 @@ struct RasterParams {
     uint32_t points_per_region = 16; // region cells
     uint64_t seed = 1;
     unsigned threads = 0;            // 0 = all cores
+    RasterDevice device = RasterDevice::Cpu;
+    uint32_t gpu_batch_views = 0; // views drawn per compute pass on the GPU (0: gpu_cube.h's default)
     // Bake only these cells (a shard's; ascending or not, each once); the other rows stay empty.
     // Empty: every cell. A cell's row never depends on which other cells are baked.
     std::span<const uint32_t> cells;
@@ -73,6 +82,10 @@ struct RasterReport {
     unsigned threads = 0;
     double seconds = 0.0, mean_visible = 0.0;
     bool cancelled = false;
+    // What drew the views: "cpu", or "gpu: <renderer> via <platform>"; with Auto and no GPU,
+    // device_note says why the CPU ran.
+    std::string device = "cpu";
+    std::string device_note;
 };
 
 // Lattice points of one grid cell in grid space: the centre first, then the lattice (above).
