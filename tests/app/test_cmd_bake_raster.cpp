@@ -10,16 +10,15 @@
 
 #include "app/bake_options.h"
 #include "tests/app/bake_command_fixture.h"
+#include "tests/support/gpu_driver.h"
 #include "tests/support/test_data.h"
 #include "visibility/methods/vis_method.h"
-#include "visibility/raster/gl_headless.h"
 #include "wld/common/read_file.h"
 #include "wld/hepvs/hepvs_file.h"
 #include "wld/zone_file.h"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 
 namespace pvs::test {
 namespace {
@@ -91,13 +90,7 @@ TEST_F(BakeRaster, DeviceChoice)
     o.device = "sideways";
     EXPECT_EQ(run(o), 2);
 
-    try {
-        GlHeadless::open();
-    } catch (const GlUnavailable& e) {
-        if (const char* r = std::getenv("PVSCOPE_REQUIRE_GPU_DRIVER"); r && std::string(r) == "1")
-            FAIL() << "no GPU driver (PVSCOPE_REQUIRE_GPU_DRIVER=1): " << e.what();
-        GTEST_SKIP() << "SKIPPED: no GPU driver: " << e.what();
-    }
+    GPU_DRIVER_OR_SKIP();
     o.device = "gpu";
     o.resolution = 16;
     o.points = 4;

@@ -159,20 +159,12 @@ void BM_GpuCube(benchmark::State& state)
         state.SkipWithError(e.what());
         return;
     }
-    GpuCube cube(*gpu, l->zone, {uint32_t(state.range(0)), true, 0.05f});
-    std::vector<uint8_t> seen(l->zone.mesh.faces.size());
-    uint64_t faces = 0;
-    for (auto _ : state) {
-        faces = 0;
-        // Point by point, as a cell's points are summed (the faces seen counted per point).
-        for (const glm::vec3& p : l->points) {
-            std::fill(seen.begin(), seen.end(), 0);
-            cube.render(std::span<const glm::vec3>(&p, 1), seen);
-            for (uint8_t s : seen)
-                faces += s;
-        }
-    }
-    count_samples(state, l->points.size(), faces);
+    // Point by point, as the CPU renderers are timed (the faces seen counted per point).
+    struct OnePoint {
+        GpuCube cube;
+        void render(const glm::vec3& p, std::vector<uint8_t>& seen) { cube.render(std::span(&p, 1), seen); }
+    } renderer{GpuCube(*gpu, l->zone, {uint32_t(state.range(0)), true, 0.05f})};
+    time_views(state, *l, renderer);
     state.SetLabel(gpu->description());
 }
 

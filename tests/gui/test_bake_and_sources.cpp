@@ -3,17 +3,16 @@
 // baker directly, cancel at a known point (the first progress call), the zone replaced while a
 // bake runs; then the inspector's PVS source switch and the PVS diff helpers.
 #include "gen/generate_zone.h"
+#include "tests/support/gpu_driver.h"
 #include "ui/gui/bake_job.h"
 #include "ui/gui/inspector_state.h"
 #include "ui/gui/pvs_rows.h"
 #include "visibility/methods/vis_method.h"
 #include "visibility/portal/portalize.h"
-#include "visibility/raster/gl_headless.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <future>
 #include <thread>
 
@@ -124,13 +123,7 @@ TEST(BakeJob, RunsEveryBakingMethodOfTheRegistry)
 // the GPU. Skips without a GPU driver unless PVSCOPE_REQUIRE_GPU_DRIVER=1 (CI: llvmpipe).
 TEST(BakeJob, RasterOnTheGpuFromTheJobThread)
 {
-    try {
-        GlHeadless::open();
-    } catch (const GlUnavailable& e) {
-        if (const char* r = std::getenv("PVSCOPE_REQUIRE_GPU_DRIVER"); r && std::string(r) == "1")
-            FAIL() << "no GPU driver (PVSCOPE_REQUIRE_GPU_DRIVER=1): " << e.what();
-        GTEST_SKIP() << "SKIPPED: no GPU driver: " << e.what();
-    }
+    GPU_DRIVER_OR_SKIP();
     const Zone zone = tiny_zone();
     gui::BakeRequest request;
     request.method = "raster";

@@ -66,6 +66,19 @@ void main()
 }
 )";
 
+// Throws when `ok` is false, with the driver's log (get_log(object, size, length, text)), after
+// deleting the object.
+template <class GetLog, class Delete>
+void check_built(GLint ok, GLuint object, GetLog get_log, Delete remove, const char* what)
+{
+    if (ok)
+        return;
+    char log[1024] = {};
+    get_log(object, sizeof log, nullptr, log);
+    remove(object);
+    throw GlUnavailable(std::string("the GPU driver cannot ") + what + " the raster baker's shaders: " + log);
+}
+
 uint32_t compile(const GlApi& gl, GLenum stage, const char* source)
 {
     const GLuint shader = gl.glCreateShader(stage);
@@ -73,12 +86,7 @@ uint32_t compile(const GlApi& gl, GLenum stage, const char* source)
     gl.glCompileShader(shader);
     GLint ok = 0;
     gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = {};
-        gl.glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        gl.glDeleteShader(shader);
-        throw GlUnavailable(std::string("the GPU driver cannot compile the raster baker's shader: ") + log);
-    }
+    check_built(ok, shader, gl.glGetShaderInfoLog, gl.glDeleteShader, "compile");
     return shader;
 }
 
@@ -95,12 +103,7 @@ uint32_t link(const GlApi& gl, std::initializer_list<std::pair<GLenum, const cha
         gl.glDeleteShader(s);
     GLint ok = 0;
     gl.glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[1024] = {};
-        gl.glGetProgramInfoLog(program, sizeof log, nullptr, log);
-        gl.glDeleteProgram(program);
-        throw GlUnavailable(std::string("the GPU driver cannot link the raster baker's shaders: ") + log);
-    }
+    check_built(ok, program, gl.glGetProgramInfoLog, gl.glDeleteProgram, "link");
     return program;
 }
 
