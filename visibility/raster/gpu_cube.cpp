@@ -190,8 +190,22 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
     gl.glCreateBuffers(1, &bits_buffer_);
     gl.glNamedBufferStorage(bits_buffer_, GLsizeiptr(bits_.size() * 4), nullptr, GL_DYNAMIC_STORAGE_BIT);
 
-    gl.glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &ids_);
-    gl.glTextureStorage3D(ids_, 1, GL_R32UI, GLsizei(resolution_), GLsizei(resolution_), GLsizei(batch_views_));
+    // The ID layers; out of memory at the default batch, half as many, down to one point's six.
+    for (;;) {
+        gl.glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &ids_);
+        gl.glTextureStorage3D(ids_, 1, GL_R32UI, GLsizei(resolution_), GLsizei(resolution_), GLsizei(batch_views_));
+        if (batch_views != 0 || batch_views_ <= 6)
+            break;
+        const GLenum error = gl.glGetError();
+        if (error != GL_OUT_OF_MEMORY) {
+            if (error != GL_NO_ERROR)
+                throw GlUnavailable("the GPU driver cannot make the raster baker's ID buffer (OpenGL error " +
+                                    std::to_string(error) + ")");
+            break;
+        }
+        gl.glDeleteTextures(1, &ids_);
+        batch_views_ /= 2;
+    }
     gl.glCreateTextures(GL_TEXTURE_2D, 1, &depth_);
     gl.glTextureStorage2D(depth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(resolution_), GLsizei(resolution_));
     check_errors(gl, "allocating the ID buffers", batch_views_, resolution_);

@@ -19,8 +19,9 @@
 //
 // Contract: one GpuCube per GlHeadless, used on the thread that opened it. `batch_views` is the
 // number of views drawn before each compute pass (0: as many as fit in 256 MiB of ID buffer,
-// at most 6 * 64); the constructor throws GlUnavailable when the device lacks what is needed
-// (texture layers, memory), naming what and suggesting a smaller batch or the CPU.
+// at most 6 * 64, halved while the GPU reports itself out of memory, down to 6); the constructor
+// throws GlUnavailable when the device lacks what is needed (shaders, memory), naming what and
+// suggesting a smaller batch or the CPU.
 #pragma once
 
 #include "visibility/raster/cube_raster.h"

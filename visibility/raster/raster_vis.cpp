@@ -89,16 +89,26 @@ Pvs bake_cells(const Zone& zone, uint32_t cells, const RasterParams& params, Ras
     };
     std::string device = "cpu", device_note;
     std::unique_ptr<GlHeadless> gpu = open_gpu(params.device, device_note);
-    bool finished = true;
+    std::optional<GpuCube> cube;
     if (gpu) {
+        try {
+            cube.emplace(*gpu, zone, params.raster, params.gpu_batch_views);
+        } catch (const GlUnavailable& e) { // no memory for one point's views, a shader refused
+            if (params.device == RasterDevice::Gpu)
+                throw;
+            device_note = std::string("the GPU cannot bake this, the CPU ran: ") + e.what();
+            gpu.reset();
+        }
+    }
+    bool finished = true;
+    if (cube) {
         device = "gpu: " + gpu->description();
-        GpuCube cube(*gpu, zone, params.raster, params.gpu_batch_views);
         std::vector<uint8_t> seen(zone.mesh.faces.size(), 0);
         for (size_t item = 0; item < items && finished; ++item) {
             const uint32_t cell = cell_of(item);
             std::fill(seen.begin(), seen.end(), 0);
             const std::vector<glm::vec3> eyes = points_of(cell);
-            cube.render(eyes, seen);
+            cube->render(eyes, seen);
             store(cell, seen, eyes.size());
             finished = !params.progress || params.progress(double(item + 1) / double(items));
         }
