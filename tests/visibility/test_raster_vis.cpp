@@ -292,7 +292,8 @@ TEST(RasterVis, TranslucentFacesHideNothing)
 //  - the two rooms, every face large: the same rows exactly, back faces culled or drawn, from
 //    points in the rooms and in the rock; glass hides nothing;
 //  - a generated zone, e1m1 and the HateEngine E1M1 OBJ grid: the rows agree but for bits where
-//    a pixel centre lies on an edge within the GPU's vertex snapping, at most 1 % of the bits;
+//    a pixel centre lies on an edge within the GPU's vertex snapping or coplanar faces tie in
+//    depth (0.2 %, 0.2 %, 0.5 % at most); every pixel that differs lies at an edge;
 //  - the same rows at any batch size and run to run; --device auto reports what ran.
 namespace pvs {
 namespace {
@@ -317,16 +318,15 @@ DeviceRows bake_on_both(const Zone& zone, RasterParams params, RasterEngine cpu_
     return {std::move(cpu), std::move(gpu), gap, report};
 }
 
-// The rows agree but at edges: at most 1 % of the bits. Measured on llvmpipe (docs/baking.md):
-// 0.3 % on e1m1 and the HateEngine grid, 0.6 % on the generated zone, nearly all bits the GPU
-// alone sees - faces it shows along a seam where the CPU's exact edges meet without a gap (the
-// GPU snaps vertices to 1/256 of a pixel). A wrong winding, view or depth rule differs by tens of
-// per cent.
-void expect_edge_differences_only(const DeviceRows& rows, const std::string& what)
+// The rows agree but for at most `bound` of the bits (a fraction). Measured on llvmpipe
+// (docs/bakes-at-scale.md): 0.1 % on the generated zone and e1m1, 0.3 % on the HateEngine grid,
+// whose model has coplanar faces of different objects over each other (the two devices break
+// those depth ties differently). A wrong winding, view or depth rule differs by tens of per cent.
+void expect_edge_differences_only(const DeviceRows& rows, const std::string& what, double bound)
 {
     const uint64_t differ = rows.gap.missing_bits + rows.gap.excess_bits;
     EXPECT_GT(rows.gap.bits, 0u) << what;
-    EXPECT_LE(double(differ), 0.01 * double(rows.gap.bits))
+    EXPECT_LE(double(differ), bound * double(rows.gap.bits))
         << what << ": " << rows.gap.missing_bits << " bits only the CPU saw, " << rows.gap.excess_bits
         << " only the GPU, of " << rows.gap.bits;
     ::testing::Test::RecordProperty(what + "_bits", std::to_string(rows.gap.bits));
@@ -366,7 +366,7 @@ TEST(RasterGpu, AGeneratedZoneAsTheCpuButAtEdges)
     params.raster.resolution = 64;
     params.points_per_region = 4;
     params.threads = 2;
-    expect_edge_differences_only(bake_on_both(zone, params), "generated");
+    expect_edge_differences_only(bake_on_both(zone, params), "generated", 0.002);
 }
 
 TEST(RasterGpu, SameRowsAtAnyBatchAndRunToRun)
@@ -478,18 +478,19 @@ void expect_pixels_differ_only_at_edges(const Zone& zone, uint32_t stride, const
             for (size_t i = 0; i < ids.size(); ++i) {
                 ++pixels;
                 const uint32_t exact = hits[i].hit ? hits[i].face + 1 : 0;
-                if (ids[i] == exact)
+                const uint32_t drawn = ids[i] & ~GpuCube::kUncounted;
+                if (drawn == exact)
                     continue;
                 ++differ;
                 const double cx = double(i % r) + 0.5, cy = double(i / r) + 0.5;
                 double nearest = std::numeric_limits<double>::infinity();
-                for (uint32_t id : {ids[i], exact})
+                for (uint32_t id : {drawn, exact})
                     if (id != 0)
                         nearest = std::min(nearest,
                                            pixels_from_edge(zone, id - 1, eye, view, cx, cy, r, options.near_distance));
                 farthest = std::max(farthest, nearest);
                 EXPECT_LE(nearest, 1.0 / 16.0) << "region " << region << " view " << view << " pixel " << i
-                                               << ": gpu face " << ids[i] << ", exact " << exact;
+                                               << ": gpu face " << drawn << ", exact " << exact;
             }
         }
     }
@@ -523,7 +524,7 @@ TEST(RasterGpu, E1m1AsTheCpuButAtEdges)
     params.points_per_region = 4;
     params.threads = 2;
     params.cells = cells;
-    expect_edge_differences_only(bake_on_both(*zone, params), "e1m1");
+    expect_edge_differences_only(bake_on_both(*zone, params), "e1m1", 0.002);
 }
 
 TEST(RasterGpu, HateEngineGridAsTheCpuButAtEdges)
@@ -541,7 +542,7 @@ TEST(RasterGpu, HateEngineGridAsTheCpuButAtEdges)
     params.points_per_region = 2;
     params.threads = 2;
     params.cells = cells;
-    expect_edge_differences_only(bake_on_both(*zone, params), "hateengine");
+    expect_edge_differences_only(bake_on_both(*zone, params), "hateengine", 0.005);
 }
 
 } // namespace

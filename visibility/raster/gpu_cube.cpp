@@ -12,11 +12,24 @@ namespace pvs {
 
 namespace {
 
-// A vertex: its position and its triangle's face (the same for the three corners).
+// A vertex: its position, its triangle's face, and which of the triangle's edges lie on the
+// face's outline (bit k: corner k to corner k + 1; a diagonal inside a face is not), the same for
+// the three corners.
 struct GpuVertex {
     float x, y, z;
     uint32_t face;
+    uint32_t outline;
 };
+
+// How near a pixel centre may lie to a face's outline, in pixels, and still count. A GPU snaps
+// vertices to a sub-pixel grid (1/256 of a pixel on llvmpipe), so a centre on a snapped edge is a
+// tie its fill rule settles; the CPU decides it exactly. Where faces meet along a seam, the face
+// on the far side of the seam - a wall going on above a ceiling, seen from under it - is visible
+// along the seam alone, a line no exact sample meets, yet a tied edge hands it whole rows of
+// pixels: most of the regions the GPU saw and the CPU did not (e1m1: 8 of 9 such bits gone at
+// this margin). Those pixels still take their depth (they hide what is behind), but their face
+// is not counted. A wider margin loses faces the CPU sees in slits (at 1/128: 26 bits).
+constexpr float kOutlineMargin = 1.0f / 1024.0f;
 
 // View k looks along axis k / 2 (sign + for even k); x and y are the next two axes in cyclic
 // order, as in cube_raster.cpp. Clip z is the near distance, so depth = near / w (reversed: the
@@ -24,10 +37,13 @@ struct GpuVertex {
 constexpr const char* kVertexShader = R"(#version 450 core
 layout(location = 0) in vec3 position;
 layout(location = 1) in uint face;
+layout(location = 2) in uint outline;
 uniform vec3 eye;
 uniform int view;
 uniform float near_distance;
 flat out uint face_id;
+flat out uint face_outline;
+noperspective out vec3 corner_weight; // barycentric on the picture: 0 on the edge facing a corner
 void main()
 {
     vec3 d = position - eye;
@@ -35,21 +51,48 @@ void main()
     float w = (view & 1) != 0 ? -d[a] : d[a];
     gl_Position = vec4(d[(a + 1) % 3], d[(a + 2) % 3], near_distance, w);
     face_id = face;
+    face_outline = outline;
+    corner_weight = vec3(0.0);
+    corner_weight[gl_VertexID % 3] = 1.0;
 }
 )";
 
-constexpr const char* kOpaqueFragmentShader = R"(#version 450 core
+// Whether the fragment's pixel centre lies within the margin of its face's outline: the weight
+// of corner k falls to 0 on the edge from corner k + 1 to k + 2, at a rate per pixel its
+// gradient gives.
+constexpr const char* kOutlineFunction = R"(
 flat in uint face_id;
+flat in uint face_outline;
+noperspective in vec3 corner_weight;
+uniform float outline_margin;
+bool near_outline()
+{
+    for (int k = 0; k < 3; ++k) {
+        if ((face_outline & (1u << uint((k + 1) % 3))) == 0u)
+            continue;
+        float per_pixel = length(vec2(dFdx(corner_weight[k]), dFdy(corner_weight[k])));
+        if (corner_weight[k] < outline_margin * per_pixel)
+            return true;
+    }
+    return false;
+}
+)";
+
+// The id's top bit marks a pixel whose face does not count (kOutlineMargin).
+constexpr const char* kOpaqueFragmentShader = R"(
 layout(location = 0) out uint id;
-void main() { id = face_id + 1u; }
+void main() { id = (face_id + 1u) | (near_outline() ? 0x80000000u : 0u); }
 )";
 
 // Early tests: only fragments in front of every opaque one reach the OR.
-constexpr const char* kTranslucentFragmentShader = R"(#version 450 core
+constexpr const char* kTranslucentFragmentShader = R"(
 layout(early_fragment_tests) in;
-flat in uint face_id;
 layout(std430, binding = 0) buffer Bits { uint bits[]; };
-void main() { atomicOr(bits[face_id >> 5], 1u << (face_id & 31u)); }
+void main()
+{
+    if (!near_outline())
+        atomicOr(bits[face_id >> 5], 1u << (face_id & 31u));
+}
 )";
 
 constexpr const char* kReduceShader = R"(#version 450 core
@@ -59,7 +102,7 @@ layout(std430, binding = 0) buffer Bits { uint bits[]; };
 void main()
 {
     uint id = imageLoad(ids, ivec3(gl_GlobalInvocationID)).r;
-    if (id != 0u) {
+    if (id != 0u && (id & 0x80000000u) == 0u) {
         uint f = id - 1u;
         atomicOr(bits[f >> 5], 1u << (f & 31u));
     }
@@ -107,13 +150,36 @@ uint32_t link(const GlApi& gl, std::initializer_list<std::pair<GLenum, const cha
     return program;
 }
 
+// Which edges of a face's triangles lie on its outline (gpu_vertex outline bits): an edge another
+// triangle of the face also has, the other way round, is a diagonal inside it. `corners` holds
+// the face's triangles, three corners each.
+void outline_bits(const std::vector<glm::vec3>& corners, std::vector<uint32_t>& bits)
+{
+    const size_t triangles = corners.size() / 3;
+    bits.assign(triangles, 0);
+    for (size_t t = 0; t < triangles; ++t)
+        for (uint32_t k = 0; k < 3; ++k) {
+            const glm::vec3& a = corners[3 * t + k];
+            const glm::vec3& b = corners[3 * t + (k + 1) % 3];
+            bool inside = false;
+            for (size_t u = 0; u < triangles && !inside; ++u)
+                for (uint32_t m = 0; m < 3 && u != t && !inside; ++m)
+                    inside = corners[3 * u + m] == b && corners[3 * u + (m + 1) % 3] == a;
+            if (!inside)
+                bits[t] |= 1u << k;
+        }
+}
+
 // The zone's triangles as vertices, opaque faces first; returns the number of opaque vertices.
 size_t zone_vertices(const Zone& zone, std::vector<GpuVertex>& out)
 {
     const Mesh& mesh = zone.mesh;
     const std::vector<uint8_t> translucent = translucent_face_mask(zone);
+    std::vector<glm::vec3> corners;
+    std::vector<uint32_t> outline;
     const auto add_face = [&](uint32_t f) {
         const Face& face = mesh.faces[f];
+        corners.clear();
         for (uint32_t t = face.first_triangle; t < face.first_triangle + face.triangle_count; ++t) {
             if (3 * size_t(t) + 2 >= mesh.indices.size())
                 break;
@@ -122,8 +188,15 @@ size_t zone_vertices(const Zone& zone, std::vector<GpuVertex>& out)
             if (i[0] >= mesh.positions.size() || i[1] >= mesh.positions.size() || i[2] >= mesh.positions.size())
                 continue;
             for (uint32_t k : i)
-                out.push_back({mesh.positions[k].x, mesh.positions[k].y, mesh.positions[k].z, f});
+                corners.push_back(mesh.positions[k]);
         }
+        // A face of many triangles (a terrain sheet) is taken as all outline: quadratic otherwise.
+        if (corners.size() <= 3 * 64)
+            outline_bits(corners, outline);
+        else
+            outline.assign(corners.size() / 3, 7u);
+        for (size_t k = 0; k < corners.size(); ++k)
+            out.push_back({corners[k].x, corners[k].y, corners[k].z, f, outline[k / 3]});
     };
     const auto is_translucent = [&](uint32_t f) { return !translucent.empty() && translucent[f] != 0; };
     for (uint32_t f = 0; f < mesh.faces.size(); ++f)
@@ -181,7 +254,8 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
     gl.glVertexArrayVertexBuffer(vertex_array_, 0, vertex_buffer_, 0, sizeof(GpuVertex));
     gl.glVertexArrayAttribFormat(vertex_array_, 0, 3, GL_FLOAT, GL_FALSE, 0);
     gl.glVertexArrayAttribIFormat(vertex_array_, 1, 1, GL_UNSIGNED_INT, 12);
-    for (GLuint a : {0u, 1u}) {
+    gl.glVertexArrayAttribIFormat(vertex_array_, 2, 1, GL_UNSIGNED_INT, 16);
+    for (GLuint a : {0u, 1u, 2u}) {
         gl.glVertexArrayAttribBinding(vertex_array_, a, 0);
         gl.glEnableVertexArrayAttrib(vertex_array_, a);
     }
@@ -215,9 +289,11 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
     if (gl.glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw GlUnavailable("the GPU driver cannot render into an R32UI texture array with a float depth buffer");
 
-    opaque_program_ = link(gl, {{GL_VERTEX_SHADER, kVertexShader}, {GL_FRAGMENT_SHADER, kOpaqueFragmentShader}});
-    translucent_program_ =
-        link(gl, {{GL_VERTEX_SHADER, kVertexShader}, {GL_FRAGMENT_SHADER, kTranslucentFragmentShader}});
+    const std::string opaque = std::string("#version 450 core\n") + kOutlineFunction + kOpaqueFragmentShader;
+    const std::string translucent =
+        std::string("#version 450 core\n") + kOutlineFunction + kTranslucentFragmentShader;
+    opaque_program_ = link(gl, {{GL_VERTEX_SHADER, kVertexShader}, {GL_FRAGMENT_SHADER, opaque.c_str()}});
+    translucent_program_ = link(gl, {{GL_VERTEX_SHADER, kVertexShader}, {GL_FRAGMENT_SHADER, translucent.c_str()}});
     reduce_program_ = link(gl, {{GL_COMPUTE_SHADER, kReduceShader}});
     for (auto [program, eye, view, near] :
          {std::tuple{opaque_program_, &opaque_eye_, &opaque_view_, &opaque_near_},
@@ -226,6 +302,7 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
         *view = gl.glGetUniformLocation(program, "view");
         *near = gl.glGetUniformLocation(program, "near_distance");
         gl.glProgramUniform1f(program, *near, near_);
+        gl.glProgramUniform1f(program, gl.glGetUniformLocation(program, "outline_margin"), kOutlineMargin);
     }
 
     // Fixed state: reversed depth in [0, 1], the picture's pixels, back faces by winding.

@@ -13,9 +13,12 @@
 // but writing nothing, and their fragment shader sets their bit directly: they hide nothing, as
 // on the CPU.
 //
-// The answers differ from the CPU rasteriser's only where a triangle edge crosses a pixel centre
-// (OpenGL's top-left fill rule against the CPU's), and do not depend on the batch size: each
-// view is cleared and drawn alone, and the OR does not care about order.
+// A pixel whose centre lies within 1/1024 of a pixel of its face's outline takes its depth but
+// does not count its face: the GPU snaps vertices to a sub-pixel grid and decides such a centre
+// either way, and along seams (a wall going on above a ceiling, seen from under it) that handed
+// it faces no exact sample sees (gpu_cube.cpp). So the answers differ from the CPU rasteriser's
+// only where a pixel centre lies that close to an edge or coplanar faces tie in depth, and do not
+// depend on the batch size: each view is cleared and drawn alone, and the OR ignores order.
 //
 // Contract: one GpuCube per GlHeadless, used on the thread that opened it. `batch_views` is the
 // number of views drawn before each compute pass (0: as many as fit in 256 MiB of ID buffer,
@@ -47,8 +50,10 @@ public:
     void render(std::span<const glm::vec3> eyes, std::vector<uint8_t>& seen);
 
     // One view's picture as drawn (view k as above): face + 1 per pixel, 0 where nothing is,
-    // rows of `resolution` from the picture's bottom. Read back pixel by pixel, so for tests and
-    // pictures, not for baking.
+    // rows of `resolution` from the picture's bottom; kUncounted is set where the pixel centre
+    // lies so near the face's outline that the face is not counted (gpu_cube.cpp says why). Read
+    // back pixel by pixel, so for tests and pictures, not for baking.
+    static constexpr uint32_t kUncounted = 0x80000000u;
     std::vector<uint32_t> view_ids(const glm::vec3& eye, int view);
 
     uint32_t batch_views() const { return batch_views_; }
