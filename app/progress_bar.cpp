@@ -1,6 +1,7 @@
 #include "app/progress_bar.h"
 
 #include <algorithm>
+#include <exception>
 #include <unistd.h>
 
 namespace pvs::app {
@@ -13,11 +14,12 @@ constexpr auto kRedrawInterval = std::chrono::milliseconds(100);
 ProgressBar::ProgressBar(std::FILE* out, std::string label, Style style)
     : out_(out), label_(std::move(label)),
       terminal_(style == Style::Terminal || (style == Style::Auto && isatty(fileno(out)) == 1)),
-      start_(std::chrono::steady_clock::now()), last_draw_(start_ - kRedrawInterval)
+      exceptions_at_start_(std::uncaught_exceptions()), start_(std::chrono::steady_clock::now()),
+      last_draw_(start_ - kRedrawInterval)
 {
 }
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() { finish(std::uncaught_exceptions() > exceptions_at_start_ ? "stopped" : "done"); }
 
 void ProgressBar::note(const std::string& line)
 {

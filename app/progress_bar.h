@@ -19,7 +19,9 @@ public:
     enum class Style { Auto, Terminal, Lines };
     // Auto picks Terminal when `out` is a terminal (isatty), Lines otherwise.
     ProgressBar(std::FILE* out, std::string label, Style style = Style::Auto);
-    ~ProgressBar(); // finish()es if not done yet
+    // finish()es if not done yet: "done", or "stopped" when an exception is leaving the caller
+    // (the error follows, so the bar must not say the work is done).
+    ~ProgressBar();
 
     void update(double fraction); // fraction in [0, 1]; values outside are clamped
     // Prints one line of text above the bar (a terminal's bar is cleared, the line written, the
@@ -38,6 +40,7 @@ private:
     std::string label_;
     bool terminal_;
     bool finished_ = false;
+    int exceptions_at_start_; // std::uncaught_exceptions() when made
     double last_fraction_ = 0.0;
     int last_decile_ = -1;
     std::chrono::steady_clock::time_point start_;
