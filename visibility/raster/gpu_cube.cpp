@@ -236,15 +236,29 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
       near_(options.near_distance > 0.0f ? options.near_distance : 0.05f), cull_back_faces_(options.cull_back_faces),
       faces_(uint32_t(zone.mesh.faces.size()))
 {
+    upload_mesh(zone);
+    make_targets(batch_views);
+    make_programs();
+    // Fixed state: reversed depth in [0, 1], the picture's pixels, back faces by winding.
     const GlApi& gl = gl_;
-    // The batch: as many views as fit in 256 MiB of IDs (at most 64 points' six), at least one.
-    GLint max_layers = 0;
-    gl.glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
-    const uint64_t view_bytes = uint64_t(resolution_) * resolution_ * 4;
-    const uint64_t fit = std::max<uint64_t>(1, (uint64_t(256) << 20) / view_bytes);
-    batch_views_ = uint32_t(std::min<uint64_t>(
-        {batch_views ? batch_views : std::min<uint64_t>(fit, 6 * 64), uint64_t(std::max(max_layers, 1))}));
+    gl.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    gl.glViewport(0, 0, GLsizei(resolution_), GLsizei(resolution_));
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glDepthFunc(GL_GREATER);
+    if (cull_back_faces_) {
+        gl.glEnable(GL_CULL_FACE);
+        gl.glCullFace(GL_BACK);
+    }
+    gl.glBindVertexArray(vertex_array_);
+    gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bits_buffer_);
+    check_errors(gl, "setting up the raster baker", batch_views_, resolution_);
+}
 
+// The zone's triangles in a vertex buffer (position, face, outline bits), and the face bits.
+void GpuCube::upload_mesh(const Zone& zone)
+{
+    const GlApi& gl = gl_;
     std::vector<GpuVertex> vertices;
     opaque_vertices_ = int32_t(zone_vertices(zone, vertices));
     translucent_vertices_ = int32_t(vertices.size()) - opaque_vertices_;
@@ -260,16 +274,27 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
         gl.glVertexArrayAttribBinding(vertex_array_, a, 0);
         gl.glEnableVertexArrayAttrib(vertex_array_, a);
     }
-
     bits_.resize(std::max<size_t>((faces_ + 31) / 32, 1));
     gl.glCreateBuffers(1, &bits_buffer_);
     gl.glNamedBufferStorage(bits_buffer_, GLsizeiptr(bits_.size() * 4), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
 
-    // The ID layers; out of memory at the default batch, half as many, down to one point's six.
+// The ID layers of a batch, the depth buffer and the framebuffer. The batch: `requested` views,
+// else as many as fit in 256 MiB of IDs (at most 64 points' six), halved while the GPU is out
+// of memory, down to one point's six.
+void GpuCube::make_targets(uint32_t requested)
+{
+    const GlApi& gl = gl_;
+    GLint max_layers = 0;
+    gl.glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &max_layers);
+    const uint64_t view_bytes = uint64_t(resolution_) * resolution_ * 4;
+    const uint64_t fit = std::max<uint64_t>(1, (uint64_t(256) << 20) / view_bytes);
+    batch_views_ = uint32_t(std::min<uint64_t>(
+        {requested ? requested : std::min<uint64_t>(fit, 6 * 64), uint64_t(std::max(max_layers, 1))}));
     for (;;) {
         gl.glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &ids_);
         gl.glTextureStorage3D(ids_, 1, GL_R32UI, GLsizei(resolution_), GLsizei(resolution_), GLsizei(batch_views_));
-        if (batch_views != 0 || batch_views_ <= 6)
+        if (requested != 0 || batch_views_ <= 6)
             break;
         const GLenum error = gl.glGetError();
         if (error != GL_OUT_OF_MEMORY) {
@@ -289,36 +314,25 @@ GpuCube::GpuCube(GlHeadless& context, const Zone& zone, const CubeRasterOptions&
     gl.glNamedFramebufferTextureLayer(framebuffer_, GL_COLOR_ATTACHMENT0, ids_, 0, 0);
     if (gl.glCheckNamedFramebufferStatus(framebuffer_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw GlUnavailable("the GPU driver cannot render into an R32UI texture array with a float depth buffer");
+}
 
+// The opaque and translucent drawing programs and the reduction, with their fixed uniforms.
+void GpuCube::make_programs()
+{
+    const GlApi& gl = gl_;
     const std::string opaque = std::string("#version 450 core\n") + kOutlineFunction + kOpaqueFragmentShader;
     const std::string translucent =
         std::string("#version 450 core\n") + kOutlineFunction + kTranslucentFragmentShader;
     opaque_program_ = link(gl, {{GL_VERTEX_SHADER, kVertexShader}, {GL_FRAGMENT_SHADER, opaque.c_str()}});
     translucent_program_ = link(gl, {{GL_VERTEX_SHADER, kVertexShader}, {GL_FRAGMENT_SHADER, translucent.c_str()}});
     reduce_program_ = link(gl, {{GL_COMPUTE_SHADER, kReduceShader}});
-    for (auto [program, eye, view, near] :
-         {std::tuple{opaque_program_, &opaque_eye_, &opaque_view_, &opaque_near_},
-          std::tuple{translucent_program_, &translucent_eye_, &translucent_view_, &translucent_near_}}) {
+    for (auto [program, eye, view] : {std::tuple{opaque_program_, &opaque_eye_, &opaque_view_},
+                                      std::tuple{translucent_program_, &translucent_eye_, &translucent_view_}}) {
         *eye = gl.glGetUniformLocation(program, "eye");
         *view = gl.glGetUniformLocation(program, "view");
-        *near = gl.glGetUniformLocation(program, "near_distance");
-        gl.glProgramUniform1f(program, *near, near_);
+        gl.glProgramUniform1f(program, gl.glGetUniformLocation(program, "near_distance"), near_);
         gl.glProgramUniform1f(program, gl.glGetUniformLocation(program, "outline_margin"), kOutlineMargin);
     }
-
-    // Fixed state: reversed depth in [0, 1], the picture's pixels, back faces by winding.
-    gl.glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    gl.glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    gl.glViewport(0, 0, GLsizei(resolution_), GLsizei(resolution_));
-    gl.glEnable(GL_DEPTH_TEST);
-    gl.glDepthFunc(GL_GREATER);
-    if (cull_back_faces_) {
-        gl.glEnable(GL_CULL_FACE);
-        gl.glCullFace(GL_BACK);
-    }
-    gl.glBindVertexArray(vertex_array_);
-    gl.glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, bits_buffer_);
-    check_errors(gl, "setting up the raster baker", batch_views_, resolution_);
 }
 
 GpuCube::~GpuCube()

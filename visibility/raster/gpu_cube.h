@@ -59,6 +59,9 @@ public:
     uint32_t batch_views() const { return batch_views_; }
 
 private:
+    void upload_mesh(const Zone& zone);
+    void make_targets(uint32_t requested_batch);
+    void make_programs();
     void draw_view(const glm::vec3& eye, int view, uint32_t layer);
     void reduce(uint32_t layers);
 
@@ -73,8 +76,8 @@ private:
     uint32_t vertex_buffer_ = 0, vertex_array_ = 0, bits_buffer_ = 0;
     uint32_t ids_ = 0, depth_ = 0, framebuffer_ = 0;
     uint32_t opaque_program_ = 0, translucent_program_ = 0, reduce_program_ = 0;
-    int32_t opaque_eye_ = -1, opaque_view_ = -1, opaque_near_ = -1;
-    int32_t translucent_eye_ = -1, translucent_view_ = -1, translucent_near_ = -1;
+    int32_t opaque_eye_ = -1, opaque_view_ = -1; // uniform locations
+    int32_t translucent_eye_ = -1, translucent_view_ = -1;
     std::vector<uint32_t> bits_; // read-back face bits
 };
 
