@@ -15,7 +15,8 @@
 // first, a software device remembered as a fallback) and then Mesa's surfaceless platform, and
 // returns a context current on the calling thread whose GL_VERSION is at least 4.5 core - or
 // throws GlUnavailable with a sentence that says what is missing and what to do. The context
-// belongs to the thread that opened it; the destructor releases and destroys it. `gl()` is the
+// belongs to the thread that opened it; the destructor releases and destroys it (the EGL display
+// stays initialised for the life of the process: gl_headless.cpp says why). `gl()` is the
 // table of every GL function the baker calls, all non-null.
 #pragma once
 
